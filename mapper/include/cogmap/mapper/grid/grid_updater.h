@@ -1,0 +1,76 @@
+#pragma once
+/// One interface, four occupancy models (thesis §2.2, §3.1.3-3.1.4, Figs. A.1-A.3): HIMM,
+/// Modified HIMM, Bayes and Dempster-Shafer. Each integrates sonar readings taken at a robot
+/// pose into the current room's grid and presents it on the HIMM scale for the ASR pipeline.
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cogmap/mapper/grid/grid.h"
+#include "cogmap/mapper/seam/robot_geometry.h"
+#include "cogmap/mapper/seam/sensor_frame.h"
+
+namespace cogmap::mapper {
+
+enum class GridKind { kHimm, kMhimm, kBayes, kDempsterShafer };
+
+/// "himm" | "mhimm" | "bayes" | "dempster_shafer"; nullopt for anything else.
+std::optional<GridKind> parse_grid_kind(std::string_view name);
+std::string_view to_string(GridKind kind);
+
+struct GridOptions {
+  double cell_scale_mm = 100.0;       ///< ℘, thesis Table 4.1 (10 cm cells)
+  double window_m = 2.0;              ///< w, thesis §3.1.4: readings within w update the grid
+  double hit_increment = 1.5;         ///< HIMM/MHIMM increment of the hit cell, thesis Fig. A.2
+  double neighbour_increment = 1.5;   ///< increment of its 8 neighbours, thesis Fig. A.2
+  double miss_decrement = 1.0;        ///< decrement along the beam, thesis §2.2.3
+  double bayes_max_occupied = 0.98;   ///< MO, thesis Table 2.1 (Moravec's maximum occupancy)
+  double initial_extent_m = 12.0;     ///< side of a new room's grid before it grows
+};
+
+/// Why readings were refused; they are counted, never written into the grid.
+struct RejectedReadings {
+  std::size_t not_finite = 0;      ///< NaN or infinite range
+  std::size_t non_positive = 0;    ///< range <= 0
+  std::size_t beyond_max = 0;      ///< range > sonar_max_range_m
+  std::size_t unknown_sonar = 0;   ///< index outside RobotGeometry::sonars
+  std::size_t total() const { return not_finite + non_positive + beyond_max + unknown_sonar; }
+};
+
+class GridUpdater {
+ public:
+  virtual ~GridUpdater() = default;
+
+  virtual GridKind kind() const = 0;
+
+  /// Starts a fresh room grid centred on `center` (the previous room's cells are dropped).
+  virtual void reset(const Point2& center) = 0;
+
+  /// Marks the cell under the robot's centre as robot path (MHIMM: -100, never overwritten).
+  virtual void mark_robot(const Pose2& robot_pose) = 0;
+
+  /// Integrates one reading taken with the robot at `robot_pose` (same frame as the grid).
+  /// Returns false, and counts the reason, for a reading that must not touch the grid.
+  virtual bool integrate(const Pose2& robot_pose, const SonarReading& reading) = 0;
+
+  /// The current room on the HIMM scale (see HistogramGrid).
+  virtual HistogramGrid histogram() const = 0;
+
+  /// One cell on the HIMM scale without copying the grid (for obstacle avoidance).
+  virtual float histogram_at(CellIndex cell) const = 0;
+
+  virtual const GridGeometry& geometry() const = 0;
+
+  /// Memory the grid's cells occupy, bytes.
+  virtual std::size_t grid_bytes() const = 0;
+
+  virtual const RejectedReadings& rejected() const = 0;
+};
+
+std::unique_ptr<GridUpdater> make_grid_updater(GridKind kind, const GridOptions& options,
+                                               const RobotGeometry& robot);
+
+}  // namespace cogmap::mapper

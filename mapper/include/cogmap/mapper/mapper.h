@@ -1,0 +1,91 @@
+#pragma once
+/// The mapper facade (thesis Fig. 1.3): consumes frames, keeps the current room's grid,
+/// builds an ASR at each boundary, localises it, stores it, and exposes the merged map.
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "cogmap/mapper/asr/asr.h"
+#include "cogmap/mapper/asr/asr_builder.h"
+#include "cogmap/mapper/boundary/asr_boundary_detector.h"
+#include "cogmap/mapper/graph/asr_graph.h"
+#include "cogmap/mapper/graph/asr_store.h"
+#include "cogmap/mapper/grid/grid_updater.h"
+#include "cogmap/mapper/localization/localizer.h"
+#include "cogmap/mapper/seam/robot_geometry.h"
+#include "cogmap/mapper/seam/sensor_frame.h"
+
+namespace cogmap::mapper {
+
+struct MapperOptions {
+  GridKind grid = GridKind::kMhimm;
+  GridOptions grid_options;
+  AsrBuilderOptions builder;
+  BoundaryKind boundary = BoundaryKind::kDoorway;
+  DoorwayOptions doorway;
+  DistanceOptions distance;
+  LocalizationKind localization = LocalizationKind::kEm;
+  LocalizerOptions localizer;
+  double min_room_duration_s = 2.0;  ///< boundaries closer in time than this are ignored
+};
+
+/// Counters for the run report.
+struct MapperStats {
+  std::size_t frames = 0;
+  std::size_t readings_used = 0;
+  RejectedReadings rejected;
+  std::size_t rooms = 0;
+  double build_time_s = 0.0;         ///< CPU spent in the room -> ASR pipeline
+  double localization_time_s = 0.0;  ///< CPU spent in EM
+  std::size_t peak_grid_bytes = 0;
+};
+
+class Mapper {
+ public:
+  /// Called once per finished room with the ASR (already localised and stored) and the trace
+  /// of its pipeline stages; the trace is dropped after the call (bounded memory).
+  using RoomListener = std::function<void(const Asr&, const AsrTrace&)>;
+
+  /// `start_pose` places the odometry frame in the world (the known start pose).
+  Mapper(const MapperOptions& options, const RobotGeometry& robot, AsrStore& store,
+         const Pose2& start_pose);
+  ~Mapper();
+  Mapper(const Mapper&) = delete;
+  Mapper& operator=(const Mapper&) = delete;
+
+  void set_room_listener(RoomListener listener);
+
+  /// Integrates one frame; returns the id of a room finished during this frame.
+  std::optional<int> process(const SensorFrame& frame);
+
+  /// Closes the current room (end of run); returns its id if it produced an ASR.
+  std::optional<int> finish();
+
+  /// Odometry composed with the start pose, world frame.
+  Pose2 odometry_pose() const;
+  /// The corrected pose estimate, world frame.
+  Pose2 pose_estimate() const;
+
+  /// The current room's grid (for navigation and live display).
+  const GridUpdater& grid() const;
+  const AsrGraph& graph() const;
+  const AsrStore& store() const;
+  const MapperStats& stats() const;
+
+  /// The merged master map (Fig. 4.4) as world-frame segments with their room ids, loaded
+  /// from the store: after localisation (`corrected`) or odometry only.
+  struct MapSegment {
+    int asr_id = -1;
+    Segment segment;
+  };
+  std::vector<MapSegment> master_map(bool corrected) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cogmap::mapper

@@ -1,0 +1,18 @@
+# Fails when a mapper source includes a header of a module it must not depend on.
+# The core (include/, src/); mapper/io may use nlohmann-json, nothing else.
+file(GLOB_RECURSE sources ${MAPPER_DIR}/include/*.h ${MAPPER_DIR}/src/*.h ${MAPPER_DIR}/src/*.cc)
+set(forbidden "box2d|yaml-cpp|GL/|png\\.h|termios|osmesa|CLI/|nlohmann|cogmap/(sim|hw|render|experiments)/")
+set(bad "")
+foreach(f ${sources})
+  file(STRINGS ${f} lines REGEX "^[ \t]*#[ \t]*include")
+  foreach(line ${lines})
+    if(line MATCHES "#[ \t]*include[ \t]*[<\"](${forbidden})")
+      list(APPEND bad "${f}: ${line}")
+    endif()
+  endforeach()
+endforeach()
+if(bad)
+  string(REPLACE ";" "\n" bad "${bad}")
+  message(FATAL_ERROR "mapper/ includes what it must not:\n${bad}")
+endif()
+message(STATUS "mapper/ includes only the standard library, Eigen and itself")
