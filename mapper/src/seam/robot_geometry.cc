@@ -28,7 +28,8 @@ RobotGeometry p2at_geometry() {
                                                   {-144, 136, 90}}};
   RobotGeometry g;
   for (const Mount& m : kMounts) {
-    g.sonars.push_back({m.x_mm / 1000.0, m.y_mm / 1000.0, m.heading_deg * std::numbers::pi / 180.0});
+    g.sonars.push_back(
+        {m.x_mm / 1000.0, m.y_mm / 1000.0, m.heading_deg * std::numbers::pi / 180.0});
   }
   g.sonar_min_range_m = 0.1;
   g.sonar_max_range_m = 5.0;

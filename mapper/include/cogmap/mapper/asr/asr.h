@@ -13,10 +13,10 @@ namespace cogmap::mapper {
 
 /// A doorway (or a fixed-distance cut) through which the robot left or entered a room.
 struct Exit {
-  Point2 center{0.0, 0.0};        ///< local frame of the ASR, metres
-  double width_m = 0.0;           ///< free width measured by the side sonars (0 when unknown)
-  double heading_rad = 0.0;       ///< direction of travel through the exit, local frame
-  std::optional<int> neighbour;   ///< id of the ASR on the other side, once known
+  Point2 center{0.0, 0.0};       ///< local frame of the ASR, metres
+  double width_m = 0.0;          ///< free width measured by the side sonars (0 when unknown)
+  double heading_rad = 0.0;      ///< direction of travel through the exit, local frame
+  std::optional<int> neighbour;  ///< id of the ASR on the other side, once known
 };
 
 /// One finished room.
@@ -27,16 +27,16 @@ struct Exit {
 /// start pose) had it. Without localisation the two are equal.
 struct Asr {
   int id = -1;
-  Pose2 pose;                       ///< local -> world, corrected
-  Pose2 odometry_pose;              ///< local -> world, odometry only
-  std::vector<Polyline> walls;      ///< fitted polylines, local frame, metres
-  std::vector<Exit> exits;          ///< exits[0] is the entry (the start pose for room 0)
-  Point2 reference_point{0.0, 0.0}; ///< pivot of rotational corrections, local frame
-  std::optional<int> parent;        ///< the room the robot came from
+  Pose2 pose;                           ///< local -> world, corrected
+  Pose2 odometry_pose;                  ///< local -> world, odometry only
+  std::vector<Polyline> walls;          ///< fitted polylines, local frame, metres
+  std::vector<Exit> exits;              ///< exits[0] is the entry (the start pose for room 0)
+  Point2 reference_point{0.0, 0.0};     ///< pivot of rotational corrections, local frame
+  std::optional<int> parent;            ///< the room the robot came from
   double heading_correction_rad = 0.0;  ///< EM rotation applied to this room about its pivot
-  std::vector<Point2> path;         ///< robot path through the room, local frame (for figures)
-  double cell_scale_mm = 100.0;     ///< ℘ the room was mapped at
-  std::size_t grid_bytes = 0;       ///< memory the room's grid used
+  std::vector<Point2> path;             ///< robot path through the room, local frame (for figures)
+  double cell_scale_mm = 100.0;         ///< ℘ the room was mapped at
+  std::size_t grid_bytes = 0;           ///< memory the room's grid used
   std::size_t extracted_vertex_count = 0;  ///< vertices before simplification (Table 4.2)
   double start_time_s = 0.0;
   double end_time_s = 0.0;

@@ -13,13 +13,13 @@ namespace cogmap::mapper {
 enum class BoundaryKind { kDoorway, kDistance };
 
 struct DoorwayOptions {
-  double close_side_m = 0.8;        ///< an obstacle this close to a side counts as L or R
-  double min_room_travel_m = 1.5;   ///< distance travelled in a room before a new exit counts
-  int confirm_frames = 2;           ///< consecutive frames a state must hold (debounce)
+  double close_side_m = 0.8;       ///< an obstacle this close to a side counts as L or R
+  double min_room_travel_m = 1.5;  ///< distance travelled in a room before a new exit counts
+  int confirm_frames = 2;          ///< consecutive frames a state must hold (debounce)
 };
 
 struct DistanceOptions {
-  double asr_distance_m = 4.5;      ///< a new ASR every 4.5 m, thesis §3.1.2
+  double asr_distance_m = 4.5;  ///< a new ASR every 4.5 m, thesis §3.1.2
 };
 
 /// The robot crossed from one ASR into the next.

@@ -11,14 +11,14 @@ namespace cogmap::mapper {
 
 struct AsrNode {
   int id = -1;
-  Pose2 pose;                  ///< local -> world, corrected
+  Pose2 pose;  ///< local -> world, corrected
   Point2 reference_point_world{0.0, 0.0};
 };
 
 struct AsrEdge {
   int from = -1;
   int to = -1;
-  int exit_index = -1;         ///< index into the `from` room's exits
+  int exit_index = -1;  ///< index into the `from` room's exits
   Point2 exit_world{0.0, 0.0};
 };
 

@@ -22,21 +22,21 @@ std::optional<GridKind> parse_grid_kind(std::string_view name);
 std::string_view to_string(GridKind kind);
 
 struct GridOptions {
-  double cell_scale_mm = 100.0;       ///< ℘, thesis Table 4.1 (10 cm cells)
-  double window_m = 2.0;              ///< w, thesis §3.1.4: readings within w update the grid
-  double hit_increment = 1.5;         ///< HIMM/MHIMM increment of the hit cell, thesis Fig. A.2
-  double neighbour_increment = 1.5;   ///< increment of its 8 neighbours, thesis Fig. A.2
-  double miss_decrement = 1.0;        ///< decrement along the beam, thesis §2.2.3
-  double bayes_max_occupied = 0.98;   ///< MO, thesis Table 2.1 (Moravec's maximum occupancy)
-  double initial_extent_m = 12.0;     ///< side of a new room's grid before it grows
+  double cell_scale_mm = 100.0;      ///< ℘, thesis Table 4.1 (10 cm cells)
+  double window_m = 2.0;             ///< w, thesis §3.1.4: readings within w update the grid
+  double hit_increment = 1.5;        ///< HIMM/MHIMM increment of the hit cell, thesis Fig. A.2
+  double neighbour_increment = 1.5;  ///< increment of its 8 neighbours, thesis Fig. A.2
+  double miss_decrement = 1.0;       ///< decrement along the beam, thesis §2.2.3
+  double bayes_max_occupied = 0.98;  ///< MO, thesis Table 2.1 (Moravec's maximum occupancy)
+  double initial_extent_m = 12.0;    ///< side of a new room's grid before it grows
 };
 
 /// Why readings were refused; they are counted, never written into the grid.
 struct RejectedReadings {
-  std::size_t not_finite = 0;      ///< NaN or infinite range
-  std::size_t non_positive = 0;    ///< range <= 0
-  std::size_t beyond_max = 0;      ///< range > sonar_max_range_m
-  std::size_t unknown_sonar = 0;   ///< index outside RobotGeometry::sonars
+  std::size_t not_finite = 0;     ///< NaN or infinite range
+  std::size_t non_positive = 0;   ///< range <= 0
+  std::size_t beyond_max = 0;     ///< range > sonar_max_range_m
+  std::size_t unknown_sonar = 0;  ///< index outside RobotGeometry::sonars
   std::size_t total() const { return not_finite + non_positive + beyond_max + unknown_sonar; }
 };
 

@@ -26,8 +26,8 @@ struct GaussianMixture2 {
 
 struct EmOptions {
   int max_iterations = 200;
-  double tolerance_rad = 1e-9;    ///< ε of Fig. A.6: stop when |Δμ_s| + |Δμ_m| falls below
-  double min_sigma_rad = 1e-4;    ///< variance floor so a component never collapses to a point
+  double tolerance_rad = 1e-9;  ///< ε of Fig. A.6: stop when |Δμ_s| + |Δμ_m| falls below
+  double min_sigma_rad = 1e-4;  ///< variance floor so a component never collapses to a point
 };
 
 struct EmResult {

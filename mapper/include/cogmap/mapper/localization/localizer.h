@@ -13,15 +13,15 @@ enum class LocalizationKind { kNone, kEm };
 
 struct LocalizerOptions {
   EmOptions em;
-  bool weight_by_length = true;        ///< long walls count more than short noisy pieces
-  double max_correction_rad = 0.35;    ///< refuse corrections beyond ~20° (no evidence can fold)
-  double min_wall_length_m = 1.0;      ///< total wall length needed on each side to try
+  bool weight_by_length = true;      ///< long walls count more than short noisy pieces
+  double max_correction_rad = 0.35;  ///< refuse corrections beyond ~20° (no evidence can fold)
+  double min_wall_length_m = 1.0;    ///< total wall length needed on each side to try
 };
 
 struct Localization {
   double rotation_rad = 0.0;  ///< rotate the new ASR by this about its reference point
   EmResult em;
-  bool applied = false;       ///< false when there was too little evidence
+  bool applied = false;  ///< false when there was too little evidence
 };
 
 class Localizer {

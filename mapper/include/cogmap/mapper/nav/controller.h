@@ -15,9 +15,9 @@ namespace cogmap::mapper::nav {
 
 /// Everything a controller may look at in one cycle.
 struct NavInput {
-  const SensorFrame* frame = nullptr;     ///< this cycle's data (odometry, sonar, stalls)
-  Pose2 pose;                             ///< the mapper's pose estimate, world frame
-  const GridUpdater* grid = nullptr;      ///< the current room's grid, same frame as `pose`
+  const SensorFrame* frame = nullptr;  ///< this cycle's data (odometry, sonar, stalls)
+  Pose2 pose;                          ///< the mapper's pose estimate, world frame
+  const GridUpdater* grid = nullptr;   ///< the current room's grid, same frame as `pose`
   const RobotGeometry* robot = nullptr;
 };
 
@@ -30,19 +30,19 @@ class Controller {
 };
 
 struct VfhOptions {
-  double sector_deg = 5.0;          ///< polar sweep increment, thesis §2.2.3
-  double window_m = 2.5;            ///< active window around the robot
-  double kappa = 1.0;               ///< κ of Eq. 2.16 (scaled by closeness, see docs)
-  double threshold = 0.0;           ///< sectors with density above this are blocked (0 = auto)
-  double safety_radius_m = 0.45;    ///< robot half-diagonal plus margin, for enlarging obstacles
+  double sector_deg = 5.0;        ///< polar sweep increment, thesis §2.2.3
+  double window_m = 2.5;          ///< active window around the robot
+  double kappa = 1.0;             ///< κ of Eq. 2.16 (scaled by closeness, see docs)
+  double threshold = 0.0;         ///< sectors with density above this are blocked (0 = auto)
+  double safety_radius_m = 0.45;  ///< robot half-diagonal plus margin, for enlarging obstacles
 };
 
 struct RouteOptions {
-  double speed_mps = 0.5;           ///< thesis §4: 0.5 m/s
+  double speed_mps = 0.5;  ///< thesis §4: 0.5 m/s
   double waypoint_tolerance_m = 0.4;
   double max_turn_rate_radps = 1.0;
   VfhOptions vfh;
-  double stuck_time_s = 4.0;        ///< no progress for this long triggers recovery
+  double stuck_time_s = 4.0;  ///< no progress for this long triggers recovery
 };
 
 struct ExploreOptions {

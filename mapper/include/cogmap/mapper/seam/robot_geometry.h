@@ -15,11 +15,11 @@ struct SonarMount {
 
 struct RobotGeometry {
   std::vector<SonarMount> sonars;
-  double sonar_min_range_m = 0.1;          ///< closer echoes are not measurable
-  double sonar_max_range_m = 5.0;          ///< R, thesis Table 2.1; readings beyond are rejected
-  double sonar_beam_width_rad = 0.5236;    ///< β, thesis Table 2.1 (30°)
-  double length_m = 0.626;                 ///< footprint along x
-  double width_m = 0.505;                  ///< footprint along y
+  double sonar_min_range_m = 0.1;        ///< closer echoes are not measurable
+  double sonar_max_range_m = 5.0;        ///< R, thesis Table 2.1; readings beyond are rejected
+  double sonar_beam_width_rad = 0.5236;  ///< β, thesis Table 2.1 (30°)
+  double length_m = 0.626;               ///< footprint along x
+  double width_m = 0.505;                ///< footprint along y
   double max_speed_mps = 0.75;
   double max_turn_rate_radps = 1.74;
   double max_accel_mps2 = 0.3;
