@@ -1,6 +1,7 @@
 #pragma once
 /// Decides when the robot leaves one ASR and enters the next: the doorway state machine of
 /// thesis Fig. 3.4 (obstacles close on both sides), or a new ASR every fixed distance (§3.1.2).
+/// docs/algorithms/30-boundaries.md reconstructs the figure and lists every interpretation.
 
 #include <memory>
 #include <optional>
@@ -10,26 +11,33 @@
 
 namespace cogmap::mapper {
 
+/// Which boundary detector a run uses (experiment key `mapper.asr_boundary`).
 enum class BoundaryKind { kDoorway, kDistance };
 
+/// Options of the doorway state machine (thesis Fig. 3.4; the thesis gives no numbers, these
+/// are ours and documented in docs/algorithms/30-boundaries.md).
 struct DoorwayOptions {
-  double close_side_m = 0.8;       ///< an obstacle this close to a side counts as L or R
-  double min_room_travel_m = 1.5;  ///< distance travelled in a room before a new exit counts
-  int confirm_frames = 2;          ///< consecutive frames a state must hold (debounce)
+  double close_side_m = 0.8;       ///< an echo closer than this (metres) on a side is L or R
+  double min_room_travel_m = 1.5;  ///< path length (m) in a room before a new exit counts
+  int confirm_frames = 2;          ///< consecutive frames a condition must hold (debounce)
+  double max_reading_age_s = 1.0;  ///< older side readings are unknown (a sonar fires ~0.5 s)
+  double side_heading_tolerance_rad = 0.35;  ///< a mount within ~20° of ±90° is a side sonar
 };
 
+/// Options of the fixed-distance cut (thesis §3.1.2, used for hallways).
 struct DistanceOptions {
-  double asr_distance_m = 4.5;  ///< a new ASR every 4.5 m, thesis §3.1.2
+  double asr_distance_m = 4.5;  ///< a new ASR every 4.5 m of travel, thesis §3.1.2
 };
 
 /// The robot crossed from one ASR into the next.
 struct BoundaryEvent {
-  double time_s = 0.0;
-  Point2 exit_center{0.0, 0.0};  ///< estimate frame, metres
-  double exit_width_m = 0.0;     ///< measured gap width (0 for distance cuts)
+  double time_s = 0.0;           ///< frame time at which the crossing was confirmed, seconds
+  Point2 exit_center{0.0, 0.0};  ///< centre of the gap, estimate frame, metres
+  double exit_width_m = 0.0;     ///< measured gap width, metres (0 for distance cuts)
   double heading_rad = 0.0;      ///< direction of travel through the exit, estimate frame
 };
 
+/// A boundary detector consumes every frame and says when a room ends.
 class AsrBoundaryDetector {
  public:
   virtual ~AsrBoundaryDetector() = default;
@@ -39,8 +47,11 @@ class AsrBoundaryDetector {
   virtual void reset() = 0;
 };
 
+/// The doorway state machine of Fig. 3.4; side sonars are the mounts of `robot` whose heading
+/// lies within `side_heading_tolerance_rad` of +90° (left) or −90° (right).
 std::unique_ptr<AsrBoundaryDetector> make_doorway_detector(const DoorwayOptions& options,
                                                            const RobotGeometry& robot);
+/// A cut every `asr_distance_m` of estimate-pose path length.
 std::unique_ptr<AsrBoundaryDetector> make_distance_detector(const DistanceOptions& options);
 
 }  // namespace cogmap::mapper
