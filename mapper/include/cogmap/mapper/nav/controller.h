@@ -1,8 +1,11 @@
 #pragma once
 /// Navigation on the live map (thesis §1.1.4, §2.2.3): VFH obstacle avoidance, a route
 /// follower through waypoints and an explorer. Works the same on the simulator and the real
-/// robot because it sees only the seam and the mapper's grid.
+/// robot because it sees only the seam and the mapper's grid. The algorithms, every option and
+/// the deviations from the thesis are explained in docs/algorithms/60-navigation.md.
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -15,45 +18,135 @@ namespace cogmap::mapper::nav {
 
 /// Everything a controller may look at in one cycle.
 struct NavInput {
-  const SensorFrame* frame = nullptr;  ///< this cycle's data (odometry, sonar, stalls)
+  const SensorFrame* frame = nullptr;  ///< this cycle's data (time, sonar, stalls); null = stop
   Pose2 pose;                          ///< the mapper's pose estimate, world frame
-  const GridUpdater* grid = nullptr;   ///< the current room's grid, same frame as `pose`
-  const RobotGeometry* robot = nullptr;
+  const GridUpdater* grid =
+      nullptr;  ///< the current room's grid, same frame as `pose`; may be null
+  const RobotGeometry* robot = nullptr;  ///< sonar mounts and limits; null = RobotGeometry{}
 };
 
+/// What the controller is doing this cycle (for traces, figures and tests).
+enum class NavMode : std::uint8_t {
+  kIdle,     ///< no frame, idle controller, or nothing to do
+  kDrive,    ///< steering along the VFH direction
+  kBlocked,  ///< every sector blocked: turning in place toward the freest sector
+  kBackOff,  ///< recovery: reversing away from where it got stuck
+  kTurn,     ///< recovery: turning in place toward the freest sector
+  kDone,     ///< route finished
+};
+
+/// The last cycle's decisions, kept so the renderer and the experiments can show them.
+struct NavTrace {
+  NavMode mode = NavMode::kIdle;
+  double target_rad = 0.0;         ///< goal direction fed to VFH, world frame, CCW
+  double direction_rad = 0.0;      ///< direction VFH chose (valid when has_direction)
+  bool has_direction = false;      ///< false when every sector was blocked
+  double front_clearance_m = 0.0;  ///< nearest obstacle ahead (±front half-angle) from the bumper
+  std::size_t waypoint_index = 0;  ///< route follower: the waypoint being approached
+  std::size_t skipped_waypoints = 0;  ///< route follower: waypoints given up after recoveries
+  std::size_t recoveries = 0;         ///< stuck recoveries started so far
+  std::vector<double> density;        ///< enlarged polar density per sector (Eq. 2.17)
+  std::vector<std::uint8_t> blocked;  ///< 1 for a blocked sector after thresholding
+};
+
+/// A navigation behaviour: one velocity command per sensor frame.
 class Controller {
  public:
   virtual ~Controller() = default;
+  /// The command for this cycle. Never throws; a null frame yields a zero command.
   virtual VelocityCommand step(const NavInput& input) = 0;
   /// True once the controller has nothing left to do (route finished).
   virtual bool done() const = 0;
+  /// The last cycle's decisions (an empty trace for controllers without any).
+  virtual const NavTrace& trace() const;
+  /// Waypoints skipped because the robot stayed stuck on them (route follower; else 0).
+  std::size_t skipped_waypoints() const { return trace().skipped_waypoints; }
 };
 
+/// Vector Field Histogram (thesis §2.2.3, Eqs. 2.15-2.17; Borenstein & Koren 1991, with the
+/// obstacle enlargement and hysteresis of VFH+, Ulrich & Borenstein 1998).
 struct VfhOptions {
-  double sector_deg = 5.0;        ///< polar sweep increment, thesis §2.2.3
-  double window_m = 2.5;          ///< active window around the robot
-  double kappa = 1.0;             ///< κ of Eq. 2.16 (scaled by closeness, see docs)
-  double threshold = 0.0;         ///< sectors with density above this are blocked (0 = auto)
-  double safety_radius_m = 0.45;  ///< robot half-diagonal plus margin, for enlarging obstacles
+  double sector_deg = 5.0;  ///< polar sweep increment, thesis §2.2.3 ("5° increments")
+  double window_m = 2.5;    ///< active window radius; also d_max of κ(d) = kappa·(1 - d/d_max)
+  double kappa = 1.0;       ///< κ of Eq. 2.16, scaled by closeness (see docs)
+  double threshold = 0.0;   ///< τ_high: sector blocked above it; 0 = auto (one cell of
+                            ///< certainty 8 at 0.8·window_m)
+  double hysteresis_ratio = 0.5;  ///< τ_low = ratio·τ_high; between the two a sector keeps
+                                  ///< its previous state (VFH+ binary histogram)
+  double safety_radius_m = 0.33;  ///< r: robot half-width 0.2525 m + 0.08 m margin; obstacles
+                                  ///< enlarged by asin(r/d) (1 m doors stay passable)
+  float occupied_above = 7.0f;    ///< HIMM cells above this are obstacles (thesis ε = 7)
+  int smoothing_sectors = 1;      ///< l of Borenstein's smoothing (used for the freest sector)
+  int wide_valley_sectors = 8;    ///< s_max: valleys at least this wide are "wide" (40°)
+  int edge_offset_sectors = 4;    ///< wide valley: steer this far inside the nearer edge (20°)
 };
 
+/// Short-term obstacle memory: raw sonar echoes of the last seconds in the estimate frame,
+/// so avoidance works right after the room grid is reset at a doorway.
+struct MemoryOptions {
+  double keep_s = 3.0;           ///< an echo is forgotten after this long
+  double max_range_m = 3.0;      ///< farther echoes are too vague (30° beam) to steer by
+  float hit_value = 8.0f;        ///< HIMM-scale certainty per echo in a cell (one echo > ε)
+  double contact_keep_s = 10.0;  ///< a stuck contact (invisible obstacle) is kept this long
+  std::size_t max_hits = 4096;   ///< bound on remembered echoes (oldest dropped first)
+};
+
+/// Heading control and the front safety check.
+struct SafetyOptions {
+  double heading_gain = 1.5;           ///< k of w = k·heading error, 1/s
+  double turn_in_place_deg = 60.0;     ///< larger heading errors turn on the spot
+  double front_half_angle_deg = 30.0;  ///< the cone ahead checked for the nearest obstacle
+  double slow_clearance_m = 1.0;       ///< from the bumper: below it speed falls linearly
+  double stop_clearance_m = 0.35;      ///< from the bumper: below it forward speed is zero
+};
+
+/// Stuck detection and the back-off-and-turn recovery.
+struct RecoveryOptions {
+  double stuck_distance_m = 0.1;       ///< less progress than this over stuck_time_s is stuck
+  double stuck_rotation_deg = 30.0;    ///< ...unless it turned at least this much
+  double stall_time_s = 0.5;           ///< wheel stall flags held this long mean stuck
+  double backoff_distance_m = 0.4;     ///< reverse this far
+  double backoff_speed_mps = 0.2;      ///< reversing speed (positive number)
+  double rear_stop_clearance_m = 0.2;  ///< stop reversing when something is this close behind
+  double turn_time_s = 1.5;            ///< longest in-place turn toward the freest sector
+  double turn_done_deg = 10.0;         ///< the turn ends early once aligned this well
+  int max_attempts = 3;                ///< per waypoint; one more stuck skips the waypoint
+};
+
+/// The route follower (experiments drive a robot through a list of world points).
 struct RouteOptions {
-  double speed_mps = 0.5;  ///< thesis §4: 0.5 m/s
-  double waypoint_tolerance_m = 0.4;
+  double speed_mps = 0.5;             ///< thesis §4: the robot drove at 0.5 m/s
+  double waypoint_tolerance_m = 0.4;  ///< a waypoint counts as reached this close
   double max_turn_rate_radps = 1.0;
   VfhOptions vfh;
   double stuck_time_s = 4.0;  ///< no progress for this long triggers recovery
+  MemoryOptions memory;
+  SafetyOptions safety;
+  RecoveryOptions recovery;
 };
 
+/// The explorer (thesis §1.1.4, Fig. 1.2): head for the most unexplored free direction.
 struct ExploreOptions {
-  double speed_mps = 0.5;
+  double speed_mps = 0.5;  ///< thesis §4: 0.5 m/s
   double max_turn_rate_radps = 1.0;
   VfhOptions vfh;
-  double stuck_time_s = 4.0;
+  double stuck_time_s = 4.0;  ///< no progress for this long triggers recovery
+  MemoryOptions memory;
+  SafetyOptions safety;
+  RecoveryOptions recovery;
+  double horizon_m = 4.0;         ///< unexplored cells are counted this far along a sector
+  double hysteresis_deg = 30.0;   ///< sectors this close to the current exploring heading...
+  double hysteresis_bonus = 5.0;  ///< ...score this many extra cells (no dithering)
+  double path_penalty = 3.0;      ///< score lost per recently visited point in a sector
+  double path_spacing_m = 0.25;   ///< the recent path is sampled every this far
+  std::size_t path_points = 400;  ///< recent path length kept (~100 m at 0.25 m)
+  double path_ignore_m = 1.0;     ///< path points this close are the trail just left behind
 };
 
+/// Follows `waypoints_world` (world frame) in order; done() after the last one.
 std::unique_ptr<Controller> make_route_follower(const RouteOptions& options,
                                                 std::vector<Point2> waypoints_world);
+/// Explores forever (done() is always false).
 std::unique_ptr<Controller> make_explorer(const ExploreOptions& options);
 /// Sends zero velocity forever (teleop / none).
 std::unique_ptr<Controller> make_idle_controller();

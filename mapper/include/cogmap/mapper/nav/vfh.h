@@ -1,0 +1,73 @@
+#pragma once
+/// The polar histogram of thesis §2.2.3 (Eqs. 2.15-2.17) and the VFH valley selection.
+/// Sectors are fixed in the world (estimate) frame: sector k is centred on k·sector_deg and
+/// covers [k·α - α/2, k·α + α/2), so sector 0 is centred on the world +x axis.
+
+#include <cstdint>
+#include <vector>
+
+#include "cogmap/mapper/nav/controller.h"
+#include "cogmap/mapper/seam/geometry.h"
+
+namespace cogmap::mapper::nav {
+
+/// One obstacle cell or remembered echo: offset from the robot centre along the world axes
+/// (not rotated into the robot frame), metres, and its HIMM-scale certainty c (0-15).
+struct ObstaclePoint {
+  Point2 offset_m{0.0, 0.0};
+  float certainty = 0.0f;
+};
+
+/// The outcome of the valley selection.
+struct VfhChoice {
+  bool found = false;          ///< false when every sector is blocked
+  double direction_rad = 0.0;  ///< chosen world direction, (-π, π]
+  int valley_sectors = 0;      ///< width of the valley it lies in, sectors
+};
+
+/// Builds the polar histogram every cycle and keeps the binary state for hysteresis.
+class Vfh {
+ public:
+  explicit Vfh(const VfhOptions& options);
+
+  /// Eqs. 2.15-2.17 over `obstacles` (those beyond window_m are ignored), each enlarged over
+  /// the sectors within asin(r/d); then smoothing and the hysteresis threshold.
+  void build(const std::vector<ObstaclePoint>& obstacles);
+
+  /// The free direction nearest `target_rad` (world): the target itself when it lies inside a
+  /// wide valley away from its edges, a wide valley's edge offset inward, or a narrow valley's
+  /// centre.
+  VfhChoice select(double target_rad) const;
+
+  /// The sector of lowest smoothed density; ties go to the one nearest `prefer_rad`.
+  int freest_sector(double prefer_rad) const;
+
+  int sector_count() const { return static_cast<int>(density_.size()); }
+  /// Sector index of a world angle (any value; wrapped).
+  int sector_of(double angle_rad) const;
+  /// World angle of a sector's centre, (-π, π].
+  double sector_center_rad(int sector) const;
+  bool blocked(int sector) const { return blocked_[wrap(sector)] != 0; }
+  /// Enlarged density per sector, h_k of Eq. 2.17 (before smoothing).
+  const std::vector<double>& density() const { return density_; }
+  /// Density after Borenstein's smoothing with window l = smoothing_sectors.
+  const std::vector<double>& smoothed() const { return smoothed_; }
+  /// 1 for blocked sectors.
+  const std::vector<std::uint8_t>& blocked_mask() const { return blocked_; }
+  /// τ_high actually used (options.threshold, or the automatic value).
+  double threshold() const { return threshold_; }
+  /// κ(d) of Eq. 2.16: kappa·(1 - d/window_m), zero outside the window.
+  double kappa_at(double distance_m) const;
+
+ private:
+  int wrap(int sector) const;
+
+  VfhOptions options_;
+  double sector_rad_;
+  double threshold_;
+  std::vector<double> density_;
+  std::vector<double> smoothed_;
+  std::vector<std::uint8_t> blocked_;
+};
+
+}  // namespace cogmap::mapper::nav

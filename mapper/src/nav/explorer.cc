@@ -1,0 +1,118 @@
+// The explorer (thesis §1.1.4, Fig. 1.2): always head for the free direction that promises
+// the most unexplored cells of the current room, keep going the same way unless another
+// direction is clearly better, and avoid going back over the recent path.
+
+#include <cmath>
+#include <deque>
+#include <numbers>
+#include <vector>
+
+#include "cogmap/mapper/grid/bresenham.h"
+#include "cogmap/mapper/nav/controller.h"
+#include "nav/nav_core.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+CoreOptions core_options(const ExploreOptions& o) {
+  return {o.speed_mps, o.max_turn_rate_radps, o.stuck_time_s, o.vfh, o.memory, o.safety,
+          o.recovery};
+}
+
+class Explorer final : public Controller {
+ public:
+  explicit Explorer(const ExploreOptions& options)
+      : options_(options), core_(core_options(options)) {}
+
+  VelocityCommand step(const NavInput& input) override {
+    if (!core_.sense(input)) return core_.stop(NavMode::kIdle);
+    if (!started_) {
+      heading_rad_ = input.pose.theta_rad;
+      started_ = true;
+    }
+    remember_path(input.pose.translation());
+    core_.check_stuck(input);
+    heading_rad_ = choose_direction(input);
+    if (const auto cmd = core_.recover(input, heading_rad_)) return *cmd;
+    return core_.drive_toward(input, heading_rad_);
+  }
+
+  bool done() const override { return false; }
+  const NavTrace& trace() const override { return core_.trace(); }
+
+ private:
+  void remember_path(const Point2& p) {
+    if (!path_.empty() && (path_.back() - p).norm() < options_.path_spacing_m) return;
+    path_.push_back(p);
+    while (path_.size() > options_.path_points) path_.pop_front();
+  }
+
+  /// Unexplored (exactly 0) cells along the ray from the robot in `direction_rad` out to the
+  /// horizon, stopping at the first obstacle: space behind a wall is not reachable from here.
+  int unexplored_along(const NavInput& input, double direction_rad) const {
+    const GridGeometry& g = core_.field().geometry();
+    const Point2 from = input.pose.translation();
+    const Point2 to =
+        from + options_.horizon_m * Point2(std::cos(direction_rad), std::sin(direction_rad));
+    const CellIndex start = g.cell_of(from);
+    int count = 0;
+    for_each_line_cell(start, g.cell_of(to), [&](CellIndex c) {
+      if (c == start) return true;
+      if (core_.field().occupied(c)) return false;
+      // Cells beyond the room grid's current extent were never seen: unexplored.
+      const float value = input.grid && g.contains(c) ? input.grid->histogram_at(c) : 0.0f;
+      if (value > options_.vfh.occupied_above) return false;
+      if (value == 0.0f) ++count;
+      return true;
+    });
+    return count;
+  }
+
+  double choose_direction(const NavInput& input) {
+    const Vfh& vfh = core_.vfh();
+    const int n = vfh.sector_count();
+    // Recent path points seen from here, by sector (spread over the neighbours: a 5° sector
+    // is narrower than the trail at a metre or two).
+    std::vector<int> path_count(n, 0);
+    for (const Point2& p : path_) {
+      const Point2 d = p - input.pose.translation();
+      const double dist = d.norm();
+      if (dist < options_.path_ignore_m || dist > options_.horizon_m) continue;
+      const int k = vfh.sector_of(std::atan2(d.y(), d.x()));
+      for (int i = -1; i <= 1; ++i) ++path_count[(k + i + n) % n];
+    }
+    const double hysteresis_rad = options_.hysteresis_deg * kPi / 180.0;
+    int best = -1;
+    double best_score = 0.0, best_turn = 0.0;
+    for (int k = 0; k < n; ++k) {
+      if (vfh.blocked(k)) continue;
+      const double center = vfh.sector_center_rad(k);
+      const double turn = std::abs(wrap_angle_rad(center - heading_rad_));
+      double score = unexplored_along(input, center) - options_.path_penalty * path_count[k];
+      if (turn <= hysteresis_rad) score += options_.hysteresis_bonus;
+      // Ties keep the smaller change of direction.
+      if (best < 0 || score > best_score || (score == best_score && turn < best_turn)) {
+        best = k;
+        best_score = score;
+        best_turn = turn;
+      }
+    }
+    return best < 0 ? heading_rad_ : vfh.sector_center_rad(best);
+  }
+
+  ExploreOptions options_;
+  NavCore core_;
+  bool started_ = false;
+  double heading_rad_ = 0.0;  // the exploring direction chosen last cycle, world
+  std::deque<Point2> path_;   // recent positions, every path_spacing_m
+};
+
+}  // namespace
+
+std::unique_ptr<Controller> make_explorer(const ExploreOptions& options) {
+  return std::make_unique<Explorer>(options);
+}
+
+}  // namespace cogmap::mapper::nav

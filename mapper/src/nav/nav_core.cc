@@ -1,0 +1,104 @@
+#include "nav/nav_core.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "nav/steering.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+constexpr double kMotionEpsilon = 1e-3;  // |v| in m/s or |w| in rad/s that counts as moving
+
+double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
+
+}  // namespace
+
+NavCore::NavCore(const CoreOptions& options)
+    : options_(options),
+      memory_(options.memory),
+      field_(options.vfh, options.memory),
+      vfh_(options.vfh),
+      recovery_(options.stuck_time_s, options.recovery) {}
+
+bool NavCore::sense(const NavInput& input) {
+  if (input.frame == nullptr) return false;
+  robot_ = input.robot ? *input.robot : RobotGeometry{};
+  // Never command more than the robot can do.
+  speed_mps_ = std::clamp(options_.speed_mps, 0.0, robot_.max_speed_mps);
+  max_turn_radps_ = std::clamp(options_.max_turn_rate_radps, 0.0, robot_.max_turn_rate_radps);
+  memory_.add_frame(*input.frame, input.pose, robot_);
+  field_.build(input.pose.translation(), input.grid, memory_);
+  vfh_.build(field_.points());
+  trace_.density = vfh_.density();
+  trace_.blocked = vfh_.blocked_mask();
+  trace_.front_clearance_m =
+      clearance_m(field_.points(), input.pose.theta_rad,
+                  deg_to_rad(options_.safety.front_half_angle_deg), robot_.length_m);
+  return true;
+}
+
+bool NavCore::check_stuck(const NavInput& input) {
+  const SensorFrame& f = *input.frame;
+  if (!recovery_.detect(f.time_s, input.pose, f.stall_left || f.stall_right, moving_)) {
+    return false;
+  }
+  // Whatever stopped the robot is where it was heading; remember it, the sonar may never see
+  // it (a low step, glass, a chair leg), so the recovery's turn and VFH steer around it.
+  memory_.add_contact(input.pose, robot_, f.time_s, last_forward_);
+  field_.build(input.pose.translation(), input.grid, memory_);
+  vfh_.build(field_.points());
+  recovery_.start(f.time_s, input.pose);
+  ++trace_.recoveries;
+  return true;
+}
+
+std::optional<VelocityCommand> NavCore::recover(const NavInput& input, double prefer_rad) {
+  if (!recovery_.active()) return std::nullopt;
+  const double rear =
+      clearance_m(field_.points(), input.pose.theta_rad + std::numbers::pi,
+                  deg_to_rad(options_.safety.front_half_angle_deg), robot_.length_m);
+  const double freest = vfh_.sector_center_rad(vfh_.freest_sector(prefer_rad));
+  const auto cmd =
+      recovery_.command(input.frame->time_s, input.pose, rear, freest, max_turn_radps_);
+  if (cmd) {
+    trace_.mode = recovery_.phase();
+    trace_.target_rad = prefer_rad;
+    trace_.direction_rad = freest;
+    trace_.has_direction = true;
+    return sent(*cmd);
+  }
+  return std::nullopt;
+}
+
+VelocityCommand NavCore::drive_toward(const NavInput& input, double target_rad) {
+  trace_.target_rad = wrap_angle_rad(target_rad);
+  const VfhChoice choice = vfh_.select(target_rad);
+  trace_.has_direction = choice.found;
+  if (!choice.found) {
+    // Boxed in: turn on the spot toward the least dense sector, hoping one opens.
+    const double freest = vfh_.sector_center_rad(vfh_.freest_sector(target_rad));
+    trace_.direction_rad = freest;
+    trace_.mode = NavMode::kBlocked;
+    const double error = wrap_angle_rad(freest - input.pose.theta_rad);
+    return sent({0.0, std::copysign(max_turn_radps_, error)});
+  }
+  trace_.direction_rad = choice.direction_rad;
+  trace_.mode = NavMode::kDrive;
+  return sent(steer(choice.direction_rad - input.pose.theta_rad, trace_.front_clearance_m,
+                    speed_mps_, max_turn_radps_, options_.safety));
+}
+
+VelocityCommand NavCore::sent(const VelocityCommand& cmd) {
+  moving_ = std::abs(cmd.v_mps) > kMotionEpsilon || std::abs(cmd.w_radps) > kMotionEpsilon;
+  if (std::abs(cmd.v_mps) > kMotionEpsilon) last_forward_ = cmd.v_mps > 0.0;
+  return cmd;
+}
+
+VelocityCommand NavCore::stop(NavMode mode) {
+  trace_.mode = mode;
+  return sent({});
+}
+
+}  // namespace cogmap::mapper::nav

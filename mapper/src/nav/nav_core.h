@@ -1,0 +1,74 @@
+#pragma once
+/// The per-cycle machinery the route follower and the explorer share: sensing (memory,
+/// obstacle field, polar histogram), stuck detection and recovery, and driving toward a goal
+/// direction through VFH with the front safety check. The behaviours only choose the goal.
+
+#include <optional>
+
+#include "cogmap/mapper/nav/controller.h"
+#include "cogmap/mapper/nav/vfh.h"
+#include "nav/obstacle_field.h"
+#include "nav/obstacle_memory.h"
+#include "nav/recovery.h"
+
+namespace cogmap::mapper::nav {
+
+/// The options both behaviours have, gathered from RouteOptions or ExploreOptions.
+struct CoreOptions {
+  double speed_mps = 0.5;
+  double max_turn_rate_radps = 1.0;
+  double stuck_time_s = 4.0;
+  VfhOptions vfh;
+  MemoryOptions memory;
+  SafetyOptions safety;
+  RecoveryOptions recovery;
+};
+
+class NavCore {
+ public:
+  explicit NavCore(const CoreOptions& options);
+
+  /// Remembers this frame's echoes, collects the obstacles and builds the polar histogram.
+  /// False (and a zero command is due) without a frame.
+  bool sense(const NavInput& input);
+
+  /// Stuck detection for this cycle; when stuck, records a contact and starts the recovery.
+  /// Returns true when a recovery started this cycle.
+  bool check_stuck(const NavInput& input);
+
+  /// The recovery command while one runs, turning toward the freest sector nearest
+  /// `prefer_rad` (world); nullopt otherwise.
+  std::optional<VelocityCommand> recover(const NavInput& input, double prefer_rad);
+
+  /// Drives toward the world direction `target_rad` through VFH and the front safety check.
+  VelocityCommand drive_toward(const NavInput& input, double target_rad);
+
+  /// Records the command about to be sent (stuck detection needs it) and returns it.
+  VelocityCommand sent(const VelocityCommand& cmd);
+
+  /// A zero command in mode `mode` (also clears the motion flag).
+  VelocityCommand stop(NavMode mode);
+
+  const Vfh& vfh() const { return vfh_; }
+  const ObstacleField& field() const { return field_; }
+  const RobotGeometry& robot() const { return robot_; }
+  NavTrace& trace() { return trace_; }
+  const NavTrace& trace() const { return trace_; }
+  double speed_mps() const { return speed_mps_; }
+  double max_turn_radps() const { return max_turn_radps_; }
+
+ private:
+  CoreOptions options_;
+  ObstacleMemory memory_;
+  ObstacleField field_;
+  Vfh vfh_;
+  StuckRecovery recovery_;
+  RobotGeometry robot_;
+  double speed_mps_ = 0.0;
+  double max_turn_radps_ = 0.0;
+  bool moving_ = false;       // the last command moved the robot
+  bool last_forward_ = true;  // the last translation was forward
+  NavTrace trace_;
+};
+
+}  // namespace cogmap::mapper::nav

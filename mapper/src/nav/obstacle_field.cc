@@ -1,0 +1,47 @@
+#include "nav/obstacle_field.h"
+
+#include <algorithm>
+
+namespace cogmap::mapper::nav {
+
+void ObstacleField::build(const Point2& center, const GridUpdater* grid,
+                          const ObstacleMemory& memory) {
+  cells_.clear();
+  points_.clear();
+  geometry_ = grid ? grid->geometry() : GridGeometry(0.0, 0.0, 100.0, 0, 0);
+  const double window = vfh_.window_m;
+  const double window_sq = window * window;
+  const auto inside = [&](CellIndex c) {
+    return (geometry_.center_of(c) - center).squaredNorm() <= window_sq;
+  };
+  if (grid) {
+    const CellIndex lo = geometry_.cell_of(center - Point2(window, window));
+    const CellIndex hi = geometry_.cell_of(center + Point2(window, window));
+    for (int y = std::max(lo.y, 0); y <= std::min(hi.y, geometry_.height() - 1); ++y) {
+      for (int x = std::max(lo.x, 0); x <= std::min(hi.x, geometry_.width() - 1); ++x) {
+        const CellIndex c{x, y};
+        const float value = grid->histogram_at(c);
+        if (value > vfh_.occupied_above && inside(c)) cells_[{x, y}] = value;
+      }
+    }
+  }
+  // Echoes falling in one cell add up like HIMM increments; a cell the grid also holds keeps
+  // the larger of the two certainties.
+  std::map<std::pair<int, int>, float> echoes;
+  for (const ObstacleMemory::Hit& h : memory.hits()) {
+    const CellIndex c = geometry_.cell_of(h.world_m);
+    if (!inside(c)) continue;
+    float& v = echoes[{c.x, c.y}];
+    v = std::min(kHistogramMax, v + memory_.hit_value);
+  }
+  for (const auto& [key, value] : echoes) {
+    float& v = cells_[key];
+    v = std::max(v, value);
+  }
+  points_.reserve(cells_.size());
+  for (const auto& [key, value] : cells_) {
+    points_.push_back({geometry_.center_of({key.first, key.second}) - center, value});
+  }
+}
+
+}  // namespace cogmap::mapper::nav

@@ -1,0 +1,41 @@
+#pragma once
+/// The obstacles VFH sees this cycle: the room grid's occupied cells within the active window
+/// merged, cell by cell, with the short-term memory (the larger certainty wins, so an obstacle
+/// both in the grid and in the memory is not counted twice).
+
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "cogmap/mapper/grid/grid_updater.h"
+#include "cogmap/mapper/nav/vfh.h"
+#include "nav/obstacle_memory.h"
+
+namespace cogmap::mapper::nav {
+
+class ObstacleField {
+ public:
+  ObstacleField(const VfhOptions& vfh, const MemoryOptions& memory) : vfh_(vfh), memory_(memory) {}
+
+  /// Collects the obstacles around `center` (estimate frame). `grid` may be null.
+  void build(const Point2& center, const GridUpdater* grid, const ObstacleMemory& memory);
+
+  /// Obstacles within the window, offsets from `center`, in cell order (deterministic).
+  const std::vector<ObstaclePoint>& points() const { return points_; }
+
+  /// True when `cell` (of geometry()) holds an obstacle inside the window.
+  bool occupied(CellIndex cell) const { return cells_.count({cell.x, cell.y}) != 0; }
+
+  /// The cell lattice used: the room grid's (cells outside it included), or 10 cm cells at
+  /// the origin when there is no grid.
+  const GridGeometry& geometry() const { return geometry_; }
+
+ private:
+  VfhOptions vfh_;
+  MemoryOptions memory_;
+  GridGeometry geometry_;
+  std::map<std::pair<int, int>, float> cells_;
+  std::vector<ObstaclePoint> points_;
+};
+
+}  // namespace cogmap::mapper::nav

@@ -1,0 +1,41 @@
+#pragma once
+/// Short-term obstacle memory: the sonar echoes of the last few seconds as points in the
+/// estimate (world) frame, plus "contacts" where the robot got stuck on something the sonar
+/// never saw. The room grid is reset at every doorway; this memory is what keeps the robot
+/// from steering into the door frame it just passed.
+
+#include <deque>
+
+#include "cogmap/mapper/nav/controller.h"
+
+namespace cogmap::mapper::nav {
+
+class ObstacleMemory {
+ public:
+  /// One remembered obstacle point.
+  struct Hit {
+    Point2 world_m{0.0, 0.0};  ///< estimate frame, metres
+    double expires_s = 0.0;    ///< forgotten once the frame time reaches this
+  };
+
+  explicit ObstacleMemory(const MemoryOptions& options) : options_(options) {}
+
+  /// Forgets expired hits, then adds this frame's echoes, placed with `pose` (the estimate at
+  /// the frame; the few-ms offset of each ping is ignored). Invalid readings are skipped.
+  void add_frame(const SensorFrame& frame, const Pose2& pose, const RobotGeometry& robot);
+
+  /// Remembers three points just beyond the bumper on the side the robot was moving
+  /// (`forward`), for contact_keep_s: a stuck robot is touching something there.
+  void add_contact(const Pose2& pose, const RobotGeometry& robot, double time_s, bool forward);
+
+  /// Hits still remembered, oldest first.
+  const std::deque<Hit>& hits() const { return hits_; }
+
+ private:
+  void push(const Point2& world_m, double expires_s);
+
+  MemoryOptions options_;
+  std::deque<Hit> hits_;
+};
+
+}  // namespace cogmap::mapper::nav

@@ -1,0 +1,67 @@
+// The route follower: waypoints in the world frame, steered through VFH (thesis §2.2.3).
+
+#include <cmath>
+#include <utility>
+
+#include "cogmap/mapper/nav/controller.h"
+#include "nav/nav_core.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+CoreOptions core_options(const RouteOptions& o) {
+  return {o.speed_mps, o.max_turn_rate_radps, o.stuck_time_s, o.vfh, o.memory, o.safety,
+          o.recovery};
+}
+
+class RouteFollower final : public Controller {
+ public:
+  RouteFollower(const RouteOptions& options, std::vector<Point2> waypoints)
+      : options_(options), waypoints_(std::move(waypoints)), core_(core_options(options)) {}
+
+  VelocityCommand step(const NavInput& input) override {
+    if (!core_.sense(input)) return core_.stop(NavMode::kIdle);
+    advance(input.pose.translation());
+    if (done()) return core_.stop(NavMode::kDone);
+    if (core_.check_stuck(input) && ++attempts_ > options_.recovery.max_attempts) {
+      // This waypoint has defeated every recovery: give it up and try the next one.
+      ++index_;
+      attempts_ = 0;
+      ++core_.trace().skipped_waypoints;
+      advance(input.pose.translation());
+      if (done()) return core_.stop(NavMode::kDone);
+    }
+    core_.trace().waypoint_index = index_;
+    const Point2 to_goal = waypoints_[index_] - input.pose.translation();
+    const double target_rad = std::atan2(to_goal.y(), to_goal.x());
+    if (const auto cmd = core_.recover(input, target_rad)) return *cmd;
+    return core_.drive_toward(input, target_rad);
+  }
+
+  bool done() const override { return index_ >= waypoints_.size(); }
+  const NavTrace& trace() const override { return core_.trace(); }
+
+ private:
+  void advance(const Point2& position) {
+    while (!done() && (waypoints_[index_] - position).norm() < options_.waypoint_tolerance_m) {
+      ++index_;
+      attempts_ = 0;
+    }
+    core_.trace().waypoint_index = index_;
+  }
+
+  RouteOptions options_;
+  std::vector<Point2> waypoints_;
+  std::size_t index_ = 0;
+  int attempts_ = 0;  // recoveries spent on the current waypoint
+  NavCore core_;
+};
+
+}  // namespace
+
+std::unique_ptr<Controller> make_route_follower(const RouteOptions& options,
+                                                std::vector<Point2> waypoints_world) {
+  return std::make_unique<RouteFollower>(options, std::move(waypoints_world));
+}
+
+}  // namespace cogmap::mapper::nav

@@ -1,0 +1,50 @@
+#include "nav/steering.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace cogmap::mapper::nav {
+namespace {
+
+double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
+
+}  // namespace
+
+double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
+                   double half_angle_rad, double length_m) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const ObstaclePoint& o : obstacles) {
+    const double bearing = std::atan2(o.offset_m.y(), o.offset_m.x());
+    if (std::abs(wrap_angle_rad(bearing - heading_rad)) > half_angle_rad) continue;
+    nearest = std::min(nearest, o.offset_m.norm() - 0.5 * length_m);
+  }
+  return nearest;
+}
+
+VelocityCommand steer(double heading_error_rad, double front_clearance_m, double speed_mps,
+                      double max_turn_radps, const SafetyOptions& options) {
+  const double turn_in_place = deg_to_rad(options.turn_in_place_deg);
+  const double error = wrap_angle_rad(heading_error_rad);
+  VelocityCommand cmd;
+  cmd.w_radps = std::clamp(options.heading_gain * error, -max_turn_radps, max_turn_radps);
+  if (std::abs(error) > turn_in_place) {
+    cmd.w_radps = std::copysign(max_turn_radps, error);
+    return cmd;
+  }
+  if (front_clearance_m <= options.stop_clearance_m) {
+    // Too close to drive: turn toward the chosen direction, and turn decisively even when it
+    // is nearly straight ahead (the obstacle sits just inside the front cone).
+    const double min_turn = max_turn_radps / 3.0;
+    if (std::abs(cmd.w_radps) < min_turn) cmd.w_radps = std::copysign(min_turn, error);
+    return cmd;
+  }
+  const double span = std::max(1e-6, options.slow_clearance_m - options.stop_clearance_m);
+  const double proximity =
+      std::clamp((front_clearance_m - options.stop_clearance_m) / span, 0.0, 1.0);
+  cmd.v_mps = speed_mps * (1.0 - std::abs(error) / turn_in_place) * proximity;
+  return cmd;
+}
+
+}  // namespace cogmap::mapper::nav

@@ -1,0 +1,25 @@
+#pragma once
+/// Heading control and the front safety check: turning a chosen world direction into a
+/// velocity command the P2-AT can follow.
+
+#include <vector>
+
+#include "cogmap/mapper/nav/controller.h"
+#include "cogmap/mapper/nav/vfh.h"
+
+namespace cogmap::mapper::nav {
+
+/// Distance from the robot's bumper (half `length_m` ahead of the centre along `heading_rad`)
+/// to the nearest obstacle whose bearing is within `half_angle_rad` of `heading_rad`, metres;
+/// +infinity when there is none. Negative when an obstacle is inside the body outline.
+double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
+                   double half_angle_rad, double length_m);
+
+/// w = k·error clipped to `max_turn_radps`; errors beyond turn_in_place_deg turn on the spot;
+/// otherwise v = speed·(1 - |error|/turn_in_place)·proximity, where proximity falls linearly
+/// from 1 at slow_clearance_m to 0 at stop_clearance_m of `front_clearance_m`. Below the stop
+/// clearance the robot turns in place at no less than a third of the turn limit.
+VelocityCommand steer(double heading_error_rad, double front_clearance_m, double speed_mps,
+                      double max_turn_radps, const SafetyOptions& options);
+
+}  // namespace cogmap::mapper::nav

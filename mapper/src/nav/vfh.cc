@@ -1,0 +1,146 @@
+#include "cogmap/mapper/nav/vfh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cogmap::mapper::nav {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+}  // namespace
+
+Vfh::Vfh(const VfhOptions& options) : options_(options) {
+  const double sector_deg = options_.sector_deg > 0.0 ? options_.sector_deg : 5.0;
+  const int count = std::max(4, static_cast<int>(std::lround(360.0 / sector_deg)));
+  sector_rad_ = 2.0 * kPi / count;
+  density_.assign(count, 0.0);
+  smoothed_.assign(count, 0.0);
+  blocked_.assign(count, 0);
+  // Automatic τ_high: one cell just above the occupancy threshold (certainty 8 on the HIMM
+  // scale) blocks its sectors once it is within 80 % of the window, i.e. 2 m for the default
+  // 2.5 m window, which leaves 3 s at 0.5 m/s to steer around it.
+  const double c = std::floor(options_.occupied_above) + 1.0;
+  threshold_ = options_.threshold > 0.0 ? options_.threshold : options_.kappa * c * c * 0.2;
+}
+
+int Vfh::wrap(int sector) const {
+  const int n = sector_count();
+  return ((sector % n) + n) % n;
+}
+
+int Vfh::sector_of(double angle_rad) const {
+  // Shift by half a sector so sector 0 is centred on 0 rad, then fold into [0, 2π).
+  double a = std::fmod(angle_rad + 0.5 * sector_rad_, 2.0 * kPi);
+  if (a < 0.0) a += 2.0 * kPi;
+  return wrap(static_cast<int>(std::floor(a / sector_rad_)));
+}
+
+double Vfh::sector_center_rad(int sector) const {
+  return wrap_angle_rad(wrap(sector) * sector_rad_);
+}
+
+double Vfh::kappa_at(double distance_m) const {
+  if (distance_m >= options_.window_m || options_.window_m <= 0.0) return 0.0;
+  return options_.kappa * (1.0 - distance_m / options_.window_m);
+}
+
+void Vfh::build(const std::vector<ObstaclePoint>& obstacles) {
+  const int n = sector_count();
+  std::fill(density_.begin(), density_.end(), 0.0);
+  for (const ObstaclePoint& o : obstacles) {
+    const double d = o.offset_m.norm();
+    const double kappa = kappa_at(d);
+    if (kappa <= 0.0 || d <= 0.0) continue;
+    const double beta = std::atan2(o.offset_m.y(), o.offset_m.x());  // Eq. 2.15
+    const double c = o.certainty;
+    const double m = c * c * kappa;  // Eq. 2.16 with κ(d) scaled by closeness
+    // Enlargement: the obstacle blocks every direction whose line passes within r of it.
+    // Inside r the whole half plane toward it is blocked.
+    const double r = options_.safety_radius_m;
+    const double gamma = d > r ? std::asin(r / d) : 0.5 * kPi;
+    const int lo = sector_of(beta - gamma);
+    const int span = wrap(sector_of(beta + gamma) - lo);
+    for (int i = 0; i <= span; ++i) density_[wrap(lo + i)] += m;  // Eq. 2.17
+  }
+  // Borenstein's smoothing: triangular weights l+1-|i| over ±l sectors.
+  const int l = std::max(0, options_.smoothing_sectors);
+  for (int k = 0; k < n; ++k) {
+    double sum = 0.0, weights = 0.0;
+    for (int i = -l; i <= l; ++i) {
+      const double w = l + 1 - std::abs(i);
+      sum += w * density_[wrap(k + i)];
+      weights += w;
+    }
+    smoothed_[k] = sum / weights;
+  }
+  // Binary histogram with hysteresis on the enlarged (unsmoothed) density: enlargement already
+  // reserves the robot's clearance, and smoothing before the threshold would close the 1-2
+  // free sectors a 1 m doorway leaves (docs/algorithms/60-navigation.md).
+  const double high = threshold_, low = options_.hysteresis_ratio * threshold_;
+  for (int k = 0; k < n; ++k) {
+    if (density_[k] > high) {
+      blocked_[k] = 1;
+    } else if (density_[k] < low) {
+      blocked_[k] = 0;
+    }
+  }
+}
+
+VfhChoice Vfh::select(double target_rad) const {
+  const int n = sector_count();
+  const int blocked_count = static_cast<int>(std::count(blocked_.begin(), blocked_.end(), 1));
+  if (blocked_count == n) return {};
+  if (blocked_count == 0) return {true, wrap_angle_rad(target_rad), n};
+  // Start scanning just after a blocked sector so every valley is seen whole.
+  int start = 0;
+  while (!blocked_[start]) ++start;
+  VfhChoice best;
+  double best_error = 4.0 * kPi;
+  const auto consider = [&](double direction, int width) {
+    const double error = std::abs(wrap_angle_rad(direction - target_rad));
+    if (error < best_error) {
+      best_error = error;
+      best = {true, wrap_angle_rad(direction), width};
+    }
+  };
+  for (int i = 1; i <= n; ++i) {
+    const int first = wrap(start + i);
+    if (blocked_[first] || !blocked_[wrap(first - 1)]) continue;
+    int width = 0;
+    while (!blocked_[wrap(first + width)]) ++width;
+    const double first_rad = sector_center_rad(first);
+    if (width < options_.wide_valley_sectors) {
+      consider(first_rad + 0.5 * (width - 1) * sector_rad_, width);  // narrow: its centre
+      continue;
+    }
+    const int offset = std::clamp(options_.edge_offset_sectors, 0, (width - 1) / 2);
+    const double right_rad = first_rad + offset * sector_rad_;
+    const double left_rad = first_rad + (width - 1 - offset) * sector_rad_;
+    // Where the target lies in the valley, in sectors from the first sector's centre.
+    double u = std::fmod(target_rad - first_rad, 2.0 * kPi);
+    if (u < 0.0) u += 2.0 * kPi;
+    u /= sector_rad_;
+    if (u >= offset && u <= width - 1 - offset) consider(target_rad, width);
+    consider(right_rad, width);
+    consider(left_rad, width);
+  }
+  return best;
+}
+
+int Vfh::freest_sector(double prefer_rad) const {
+  int best = 0;
+  for (int k = 1; k < sector_count(); ++k) {
+    if (smoothed_[k] < smoothed_[best]) {
+      best = k;
+    } else if (smoothed_[k] == smoothed_[best] &&
+               std::abs(wrap_angle_rad(sector_center_rad(k) - prefer_rad)) <
+                   std::abs(wrap_angle_rad(sector_center_rad(best) - prefer_rad))) {
+      best = k;
+    }
+  }
+  return best;
+}
+
+}  // namespace cogmap::mapper::nav
