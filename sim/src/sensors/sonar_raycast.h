@@ -1,0 +1,43 @@
+#pragma once
+/// Geometry of one sonar cone against a SonarScene (internal to the sonar model): ray casting,
+/// specular bounces and the first-arriving echo. Noise-free and deterministic.
+
+#include <optional>
+
+#include "cogmap/mapper/seam/geometry.h"
+#include "cogmap/sim/sonar_model.h"
+
+namespace cogmap::sim::sonar_detail {
+
+/// Where a ray first meets a surface.
+struct RayHit {
+  double t_m = 0.0;       ///< distance along the ray, metres
+  int surface = -1;       ///< index into SonarScene::surfaces
+  mapper::Point2 point;   ///< hit point, world frame
+  mapper::Point2 normal;  ///< unit surface normal (either side; use |d·n|)
+};
+
+/// The first surface hit by the ray origin + t·dir (dir unit) with t in (eps, max_t];
+/// `skip_surface` is ignored (the surface a bounce leaves from).
+std::optional<RayHit> first_hit(const SonarScene& scene, const mapper::Point2& origin,
+                                const mapper::Point2& dir, double max_t_m, int skip_surface = -1);
+
+/// Angle between a unit ray direction and a unit surface normal, folded to [0, π/2], radians.
+double incidence_rad(const mapper::Point2& dir, const mapper::Point2& normal);
+
+/// The mirror image of `dir` about a surface with unit `normal`.
+mapper::Point2 reflect(const mapper::Point2& dir, const mapper::Point2& normal);
+
+/// The cone of one transducer, world frame.
+struct Cone {
+  mapper::Point2 origin;  ///< transducer position, metres
+  double axis_rad = 0.0;  ///< beam axis heading, radians
+  double half_beam_rad = 0.0;
+  double max_range_m = 5.0;
+};
+
+/// The earliest echo the transducer hears: normal-incidence feet of surfaces inside the cone,
+/// corners inside the cone, rays within the critical angle, and (if enabled) one-bounce multipath.
+SonarEcho first_echo(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options);
+
+}  // namespace cogmap::sim::sonar_detail
