@@ -22,13 +22,20 @@ std::optional<GridKind> parse_grid_kind(std::string_view name);
 std::string_view to_string(GridKind kind);
 
 struct GridOptions {
-  double cell_scale_mm = 100.0;      ///< ℘, thesis Table 4.1 (10 cm cells)
-  double window_m = 2.0;             ///< w, thesis §3.1.4: readings within w update the grid
-  double hit_increment = 1.5;        ///< HIMM/MHIMM increment of the hit cell, thesis Fig. A.2
-  double neighbour_increment = 1.5;  ///< increment of its 8 neighbours, thesis Fig. A.2
+  double cell_scale_mm = 100.0;  ///< ℘, thesis Table 4.1 (10 cm cells)
+  double window_m = 2.0;         ///< w, thesis §3.1.4: readings within w update the grid
+  /// HIMM/MHIMM: the hit cell gets hit_increment, then every cell of its 3x3 block, the hit
+  /// cell included, gets neighbour_increment (the loop of thesis Figs. A.2-A.3), so the hit
+  /// cell rises by 3 (as §2.2.3 states) and its 8 neighbours by 1.5. §2.2.3's +0.5 and
+  /// §3.1.4's +1 disagree with the pseudocode the thesis ran; docs/algorithms/10-grids.md.
+  double hit_increment = 1.5;        ///< thesis Fig. A.2 (first line of Update)
+  double neighbour_increment = 1.5;  ///< each of the 3x3 incl. the hit cell, thesis Fig. A.2
   double miss_decrement = 1.0;       ///< decrement along the beam, thesis §2.2.3
   double bayes_max_occupied = 0.98;  ///< MO, thesis Table 2.1 (Moravec's maximum occupancy)
   double initial_extent_m = 12.0;    ///< side of a new room's grid before it grows
+  /// Bayes/DS region I half-depth as a fraction of the range r; at least one cell. The thesis
+  /// gives no tolerance; 1 % is the sonar's range noise (docs/p2at.md).
+  double region_one_range_fraction = 0.01;
 };
 
 /// Why readings were refused; they are counted, never written into the grid.
