@@ -10,6 +10,7 @@
 
 namespace cogmap::mapper {
 
+/// Thresholds of the room pipeline; τ, γ, η and the join distance are in cells (scaled by ℘).
 struct AsrBuilderOptions {
   double occupied_threshold = 7.0;      ///< ε, thesis Table 4.1: H > ε is occupied
   double vertex_tolerance_cells = 2.0;  ///< τ, thesis Table 4.1 / Fig. A.4
@@ -17,6 +18,11 @@ struct AsrBuilderOptions {
   double douglas_peucker_cells = 1.0;   ///< η, thesis Fig. A.5 (no value given; see docs)
   double min_abs_correlation = 0.9;     ///< |ρ| acceptance, thesis §3.1.8
   double max_sonar_range_m = 5.0;       ///< max_dist of the clean-map rays, thesis Fig. 3.8
+  /// Fitted lines meet at their intersection only if it lies this close to the shared DP vertex
+  /// (not in the thesis; see docs/algorithms/20-asr-pipeline.md).
+  double join_max_distance_cells = 3.0;
+  /// Extracted polylines with fewer cells are dropped as noise (not in the thesis; see docs).
+  int min_polyline_cells = 2;
 };
 
 /// Every intermediate product of one room, in the grid's (local) frame, metres.
