@@ -74,7 +74,7 @@ std::optional<VelocityCommand> NavCore::recover(const NavInput& input, double pr
 
 VelocityCommand NavCore::drive_toward(const NavInput& input, double target_rad) {
   trace_.target_rad = wrap_angle_rad(target_rad);
-  const VfhChoice choice = vfh_.select(target_rad);
+  const VfhChoice choice = vfh_.select(target_rad, input.pose.theta_rad);
   trace_.has_direction = choice.found;
   if (!choice.found) {
     // Boxed in: turn on the spot toward the least dense sector, hoping one opens.

@@ -88,7 +88,7 @@ void Vfh::build(const std::vector<ObstaclePoint>& obstacles) {
   }
 }
 
-VfhChoice Vfh::select(double target_rad) const {
+VfhChoice Vfh::select(double target_rad, double heading_rad) const {
   const int n = sector_count();
   const int blocked_count = static_cast<int>(std::count(blocked_.begin(), blocked_.end(), 1));
   if (blocked_count == n) return {};
@@ -97,11 +97,12 @@ VfhChoice Vfh::select(double target_rad) const {
   int start = 0;
   while (!blocked_[start]) ++start;
   VfhChoice best;
-  double best_error = 4.0 * kPi;
+  double best_cost = 0.0;
   const auto consider = [&](double direction, int width) {
-    const double error = std::abs(wrap_angle_rad(direction - target_rad));
-    if (error < best_error) {
-      best_error = error;
+    const double cost = std::abs(wrap_angle_rad(direction - target_rad)) +
+                        options_.heading_weight * std::abs(wrap_angle_rad(direction - heading_rad));
+    if (!best.found || cost < best_cost) {
+      best_cost = cost;
       best = {true, wrap_angle_rad(direction), width};
     }
   };

@@ -79,6 +79,8 @@ struct VfhOptions {
   int smoothing_sectors = 1;      ///< l of Borenstein's smoothing (used for the freest sector)
   int wide_valley_sectors = 8;    ///< s_max: valleys at least this wide are "wide" (40°)
   int edge_offset_sectors = 4;    ///< wide valley: steer this far inside the nearer edge (20°)
+  double heading_weight = 0.2;    ///< cost of turning relative to missing the target (VFH+
+                                  ///< μ2/μ1, smaller so the target dominates)
 };
 
 /// Short-term obstacle memory: raw sonar echoes of the last seconds in the estimate frame,

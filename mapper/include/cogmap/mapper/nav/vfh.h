@@ -34,10 +34,12 @@ class Vfh {
   /// the sectors within asin(r/d); then smoothing and the hysteresis threshold.
   void build(const std::vector<ObstaclePoint>& obstacles);
 
-  /// The free direction nearest `target_rad` (world): the target itself when it lies inside a
-  /// wide valley away from its edges, a wide valley's edge offset inward, or a narrow valley's
-  /// centre.
-  VfhChoice select(double target_rad) const;
+  /// The candidate direction (world) of least cost |target - c| + heading_weight·|heading - c|:
+  /// candidates are the target itself when it lies inside a wide valley away from its edges,
+  /// each wide valley's edges offset inward, and each narrow valley's centre.
+  VfhChoice select(double target_rad, double heading_rad) const;
+  /// select() with the heading equal to the target (no turning preference).
+  VfhChoice select(double target_rad) const { return select(target_rad, target_rad); }
 
   /// The sector of lowest smoothed density; ties go to the one nearest `prefer_rad`.
   int freest_sector(double prefer_rad) const;

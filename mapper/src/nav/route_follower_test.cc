@@ -1,0 +1,153 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "cogmap/mapper/nav/controller.h"
+#include "nav/fake_grid_updater.h"
+#include "nav/nav_test_util.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+using testing::frame_at;
+using testing::integrate;
+
+constexpr double kPi = std::numbers::pi;
+
+struct Fixture {
+  RobotGeometry robot = p2at_geometry();
+  testing::FakeGridUpdater grid{-5.0, -5.0, 10.0, -1.0f};  // all seen empty
+  SensorFrame frame;
+
+  VelocityCommand step(Controller& c, int i, const Pose2& pose) {
+    frame = frame_at(i);
+    return c.step({&frame, pose, &grid, &robot});
+  }
+};
+
+TEST(RouteFollower, TurnsTowardAWaypointOnTheLeftThenDrives) {
+  Fixture fx;
+  auto c = make_route_follower(RouteOptions{}, {Point2(0.0, 2.0), Point2(2.0, 2.0)});
+  const VelocityCommand turn = fx.step(*c, 0, {0.0, 0.0, 0.0});
+  EXPECT_GT(turn.w_radps, 0.0);
+  EXPECT_DOUBLE_EQ(turn.v_mps, 0.0);  // 90° off: turn in place
+  EXPECT_DOUBLE_EQ(turn.w_radps, 1.0);
+  const VelocityCommand drive = fx.step(*c, 1, {0.0, 0.0, kPi / 2});
+  EXPECT_DOUBLE_EQ(drive.v_mps, 0.5);
+  EXPECT_NEAR(drive.w_radps, 0.0, 1e-12);
+  const VelocityCommand veer = fx.step(*c, 2, {0.0, 0.0, kPi / 2 - 0.2});
+  EXPECT_GT(veer.w_radps, 0.0);
+  EXPECT_GT(veer.v_mps, 0.0);
+  EXPECT_LT(veer.v_mps, 0.5);  // slower while the heading is off
+  EXPECT_EQ(c->trace().waypoint_index, 0u);
+  EXPECT_FALSE(c->done());
+}
+
+TEST(RouteFollower, AdvancesWithinToleranceAndIsDoneAfterTheLast) {
+  Fixture fx;
+  auto c = make_route_follower(RouteOptions{}, {Point2(0.0, 2.0), Point2(2.0, 2.0)});
+  const VelocityCommand next = fx.step(*c, 0, {0.0, 1.7, kPi / 2});  // 0.3 m < 0.4 m
+  EXPECT_EQ(c->trace().waypoint_index, 1u);
+  EXPECT_LT(next.w_radps, 0.0);  // (2, 2) is to the right of north
+  EXPECT_FALSE(c->done());
+  const VelocityCommand last = fx.step(*c, 1, {1.7, 2.0, 0.0});
+  EXPECT_TRUE(c->done());
+  EXPECT_EQ(c->trace().mode, NavMode::kDone);
+  EXPECT_DOUBLE_EQ(last.v_mps, 0.0);
+  EXPECT_DOUBLE_EQ(last.w_radps, 0.0);
+  EXPECT_EQ(c->skipped_waypoints(), 0u);
+}
+
+TEST(RouteFollower, RespectsTheRobotLimitsAndStopsWithoutAFrame) {
+  Fixture fx;
+  fx.robot.max_speed_mps = 0.3;
+  fx.robot.max_turn_rate_radps = 0.5;
+  RouteOptions options;
+  options.speed_mps = 1.0;
+  options.max_turn_rate_radps = 2.0;
+  auto c = make_route_follower(options, {Point2(0.0, 3.0)});
+  EXPECT_DOUBLE_EQ(fx.step(*c, 0, {0.0, 0.0, 0.0}).w_radps, 0.5);
+  EXPECT_DOUBLE_EQ(fx.step(*c, 1, {0.0, 0.0, kPi / 2}).v_mps, 0.3);
+  const VelocityCommand none = c->step({nullptr, {}, nullptr, nullptr});
+  EXPECT_DOUBLE_EQ(none.v_mps, 0.0);
+  EXPECT_DOUBLE_EQ(none.w_radps, 0.0);
+}
+
+TEST(RouteFollower, SlowsDownNearAnObstacleAheadAndStopsWhenTooClose) {
+  Fixture fx;
+  // Target 20.6° right; one cell at (0.95, 0.45), 25.3° left, inside the ±30° front cone.
+  fx.grid.fill_box(0.92, 0.42, 0.98, 0.48, 15.0f);
+  auto c = make_route_follower(RouteOptions{}, {Point2(4.0, -1.5)});
+  const VelocityCommand slowed = fx.step(*c, 0, {0.0, 0.0, 0.0});
+  const double error = std::atan2(-1.5, 4.0);
+  const double clearance = std::hypot(0.95, 0.45) - 0.313;  // from the bumper
+  EXPECT_DOUBLE_EQ(c->trace().direction_rad, error);        // free: VFH keeps the target
+  EXPECT_NEAR(c->trace().front_clearance_m, clearance, 1e-9);
+  const double expected =
+      0.5 * (1.0 - std::abs(error) / (kPi / 3)) * (clearance - 0.35) / (1.0 - 0.35);
+  EXPECT_NEAR(slowed.v_mps, expected, 1e-9);
+  EXPECT_LT(slowed.w_radps, 0.0);
+
+  testing::FakeGridUpdater near_grid{-5.0, -5.0, 10.0, -1.0f};
+  near_grid.fill_box(0.52, 0.12, 0.58, 0.18, 15.0f);  // (0.55, 0.15): 0.26 m from the bumper
+  auto d = make_route_follower(RouteOptions{}, {Point2(4.0, -1.5)});
+  SensorFrame f = frame_at(0);
+  const VelocityCommand stopped = d->step({&f, {0.0, 0.0, 0.0}, &near_grid, &fx.robot});
+  EXPECT_DOUBLE_EQ(stopped.v_mps, 0.0);
+  EXPECT_LT(stopped.w_radps, 0.0);  // turning away to the right, toward the target side
+}
+
+// Closed loop through a 1 m doorway in a wall at x = 2: the target is 2 m beyond it.
+TEST(RouteFollower, DrivesThroughAOneMetreDoorway) {
+  Fixture fx;
+  fx.grid.fill_box(1.92, 0.52, 1.98, 5.0, 15.0f);
+  fx.grid.fill_box(1.92, -5.0, 1.98, -0.52, 15.0f);
+  auto c = make_route_follower(RouteOptions{}, {Point2(4.0, 0.4)});
+  Pose2 pose{0.0, -0.6, 0.3};
+  double nearest_post_m = 1e9;
+  int i = 0;
+  for (; i < 400 && !c->done(); ++i) {
+    pose = integrate(pose, fx.step(*c, i, pose));
+    for (const double y : {0.55, -0.55}) {
+      nearest_post_m = std::min(nearest_post_m, (pose.translation() - Point2(1.95, y)).norm());
+    }
+  }
+  EXPECT_TRUE(c->done()) << "stopped at " << pose.x_m << ", " << pose.y_m;
+  EXPECT_GT(pose.x_m, 3.0);
+  EXPECT_GT(nearest_post_m, 0.25 + 0.05);  // half width + half a cell: no contact
+  EXPECT_EQ(c->trace().recoveries, 0u);
+}
+
+// Closed loop around a box between the start and the goal.
+TEST(RouteFollower, GoesAroundAnObstacle) {
+  Fixture fx;
+  fx.grid.fill_box(1.5, -0.5, 1.8, 0.5, 15.0f);
+  auto c = make_route_follower(RouteOptions{}, {Point2(3.5, 0.0)});
+  Pose2 pose{0.0, 0.0, 0.0};
+  double nearest_m = 1e9;
+  for (int i = 0; i < 400 && !c->done(); ++i) {
+    pose = integrate(pose, fx.step(*c, i, pose));
+    const double dx = std::max({1.5 - pose.x_m, 0.0, pose.x_m - 1.8});
+    const double dy = std::max({-0.5 - pose.y_m, 0.0, pose.y_m - 0.5});
+    nearest_m = std::min(nearest_m, std::hypot(dx, dy));
+  }
+  EXPECT_TRUE(c->done());
+  EXPECT_GT(nearest_m, 0.3);
+}
+
+TEST(IdleController, AlwaysCommandsZero) {
+  Fixture fx;
+  auto c = make_idle_controller();
+  for (int i = 0; i < 3; ++i) {
+    const VelocityCommand cmd = fx.step(*c, i, {1.0, 2.0, 0.5});
+    EXPECT_DOUBLE_EQ(cmd.v_mps, 0.0);
+    EXPECT_DOUBLE_EQ(cmd.w_radps, 0.0);
+  }
+  EXPECT_FALSE(c->done());
+  EXPECT_EQ(c->trace().mode, NavMode::kIdle);
+}
+
+}  // namespace
+}  // namespace cogmap::mapper::nav
