@@ -54,15 +54,17 @@ void for_each_cone_cell(const GridGeometry& g, const SonarCone& cone, Visitor&& 
   const CellIndex c0 = g.cell_of(lo), c1 = g.cell_of(hi);
   const double outer = cone.outer_m(), outer2 = outer * outer;
   const double cos_half = std::cos(cone.half_width_rad);
+  const double cos_half2 = cos_half * cos_half;
   const double region_one_from = cone.range_m - cone.tolerance_m;
   for (int y = std::max(c0.y, 0); y <= std::min(c1.y, g.height() - 1); ++y) {
     for (int x = std::max(c0.x, 0); x <= std::min(c1.x, g.width() - 1); ++x) {
       const Point2 v = g.center_of({x, y}) - cone.beam.origin;
       const double d2 = v.squaredNorm();
       if (d2 > outer2 || d2 <= 0.0) continue;
-      const double d = std::sqrt(d2);
       const double along = v.x() * cone.beam.cos_h + v.y() * cone.beam.sin_h;
-      if (along < d * cos_half) continue;
+      // along >= d cos(β/2), squared to skip the sqrt for the half of the box outside the cone.
+      if (along <= 0.0 || along * along < d2 * cos_half2) continue;
+      const double d = std::sqrt(d2);
       const double across = v.y() * cone.beam.cos_h - v.x() * cone.beam.sin_h;
       const double alpha = std::atan2(std::abs(across), along);
       visit(CellIndex{x, y}, d, alpha, cone.has_region_one && d >= region_one_from);
