@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "asr/test_rooms.h"
+#include "test_rooms.h"
 
 namespace cogmap::mapper {
 namespace {
