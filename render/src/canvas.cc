@@ -19,8 +19,8 @@ std::mutex& figure_mutex() {
 void set_color(Rgb c) { glColor3f(c.r, c.g, c.b); }
 
 // A dash pattern long enough to read as dashed at figure scale but not as dotted.
-constexpr GLushort kDashPattern = 0x0FFF;
-constexpr GLint kDashFactor = 2;
+constexpr GLushort kDashPattern = 0x00FF;
+constexpr GLint kDashFactor = 1;
 
 void begin_lines(Rgb color, float width_px, bool dashed) {
   set_color(color);

@@ -1,7 +1,9 @@
 // Figs. 4.4-4.6: the merged map before and after localisation over the ground truth.
 
 #include <algorithm>
+#include <initializer_list>
 #include <stdexcept>
+#include <utility>
 
 #include "canvas.h"
 #include "cogmap/render/figures.h"
@@ -12,6 +14,7 @@ namespace {
 
 constexpr double kViewMarginM = 0.5;   // white space around the data
 constexpr double kMinViewSizeM = 2.0;  // a lone point still gets a readable window
+constexpr double kStartDotRadiusPx = 4.5;
 
 struct MapPanel {
   std::string caption;
@@ -31,6 +34,16 @@ void draw_labels(Canvas& canvas, const WorldView& view, const std::vector<mapper
     canvas.disc(p, 3.0, style.text, style.text, 0.0f);
     canvas.text(labels[i], style.label_font_px, style.text, p.x() + 5, p.y() - 3, HAlign::kLeft,
                 VAlign::kBottom);
+  }
+}
+
+// A dot where each path begins, so the direction of travel can be read off the figure.
+void mark_starts(Canvas& canvas, const WorldView& view,
+                 std::initializer_list<std::pair<const std::vector<mapper::Point2>*, Rgb>> paths) {
+  canvas.use_pixels();
+  for (const auto& [path, color] : paths) {
+    if (path->empty()) continue;
+    canvas.disc(view.to_pixel(path->front()), kStartDotRadiusPx, color, color, 0.0f);
   }
 }
 
@@ -93,6 +106,8 @@ void write_map_figure(const MapFigure& figure, const std::filesystem::path& png,
     canvas.polyline(figure.true_path, style.true_path, style.path_width_px);
     canvas.polyline(*panel.path, panel.path_color, style.path_width_px);
     canvas.segments(*panel.map, style.map_wall, style.map_wall_width_px);
+    mark_starts(canvas, view,
+                {{&figure.true_path, style.true_path}, {panel.path, panel.path_color}});
     if (!panel.labels_at->empty()) draw_labels(canvas, view, *panel.labels_at, figure.room_labels);
     draw_panel_furniture(canvas, pl, panel_letter(i), panel.caption, legend, &view);
   }

@@ -13,12 +13,14 @@ struct Rgba8 {
   std::uint8_t g = 0;    ///< green
   std::uint8_t b = 0;    ///< blue
   std::uint8_t a = 255;  ///< alpha (255 opaque)
+  /// Channel-wise equality.
   bool operator==(const Rgba8&) const = default;
 };
 
 /// A width x height RGBA image; row 0 is the top row.
 class Image {
  public:
+  /// An empty 0 x 0 image.
   Image() = default;
   /// A new image filled with `fill`.
   Image(int width_px, int height_px, Rgba8 fill = {255, 255, 255, 255})
@@ -28,12 +30,15 @@ class Image {
 
   int width() const { return width_; }    ///< pixels
   int height() const { return height_; }  ///< pixels
+  /// True when column x, row y lies inside the image.
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }
   /// Pixel at column x, row y (row 0 at the top); must be inside.
   const Rgba8& at(int x, int y) const { return pixels_[index(x, y)]; }
+  /// Mutable pixel at column x, row y; must be inside.
   Rgba8& at(int x, int y) { return pixels_[index(x, y)]; }
   /// Raw pixels, row-major from the top row.
   const std::vector<Rgba8>& pixels() const { return pixels_; }
+  /// Mutable raw pixels; keep the size at width * height.
   std::vector<Rgba8>& pixels() { return pixels_; }
 
  private:
