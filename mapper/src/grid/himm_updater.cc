@@ -43,10 +43,7 @@ class HimmUpdater final : public GridUpdater {
     const Point2 end = beam.at(reading.range_m);
     // Fig. A.2: If (dist(x_i, y_i, x_0, y_0) < w) Then Update; farther readings are dropped.
     if ((end - centre).squaredNorm() >= options_.window_m * options_.window_m) return true;
-    grow_to_hold(centre, cells_, path_);
-    grow_to_hold(end, cells_, path_);
-    const GridGeometry& g = cells_.geometry();
-    const CellIndex from = g.cell_of(centre), to = g.cell_of(end);
+    const auto [from, to] = hold_pair(centre, end, cells_, path_);
     const auto decrement = static_cast<float>(options_.miss_decrement);
     if (reading.echo) {
       increment_hit(cells_, to, static_cast<float>(options_.hit_increment),
