@@ -1,0 +1,51 @@
+#pragma once
+/// The ASR and ASR-graph file formats: JSON, version 1 (docs/asr-format.md lists every field).
+/// Writers print doubles with 17 significant digits, so a round trip is bit-exact. Readers
+/// validate everything and throw std::runtime_error naming the file and the field path.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "cogmap/mapper/asr/asr.h"
+#include "cogmap/mapper/graph/asr_graph.h"
+
+namespace cogmap::mapper::io {
+
+/// The value of "format" in an ASR file.
+inline constexpr std::string_view kAsrFormat = "cogmap-asr";
+/// The value of "format" in an ASR graph file.
+inline constexpr std::string_view kAsrGraphFormat = "cogmap-asr-graph";
+/// The only version these readers accept.
+inline constexpr int kFormatVersion = 1;
+
+/// One ASR as JSON text (pretty-printed, trailing newline). Throws std::invalid_argument naming
+/// the field when a number is not finite (JSON cannot hold NaN or infinity).
+std::string asr_to_json_text(const Asr& asr);
+
+/// Parses and validates one ASR. `file` names the source in error messages
+/// (e.g. "asrs/003.json: walls[2][5]: expected [x, y] numbers").
+Asr asr_from_json_text(std::string_view text, const std::string& file);
+
+/// The room graph as JSON text: {"format", "version", "nodes": [{id, pose, reference_point}],
+/// "edges": [{from, to, exit_index, exit}]}; positions in the world frame, metres.
+std::string asr_graph_to_json_text(const AsrGraph& graph);
+
+/// Parses and validates a room graph; errors name `file` and the field path.
+AsrGraph asr_graph_from_json_text(std::string_view text, const std::string& file);
+
+/// Writes asr_graph.json atomically (temp file, fsync, rename, fsync of the directory).
+void write_asr_graph_json(const AsrGraph& graph, const std::filesystem::path& path);
+
+/// Reads a file written by write_asr_graph_json.
+AsrGraph read_asr_graph_json(const std::filesystem::path& path);
+
+/// Replaces `path` with `content` so that a crash at any moment leaves either the old file or
+/// the new one, never a mix: write a temp file in the same directory, fsync it, rename it over
+/// `path`, fsync the directory. Throws std::runtime_error naming the path on any failure.
+void write_file_atomic(const std::filesystem::path& path, std::string_view content);
+
+/// Reads a whole file; throws std::runtime_error naming the path when it cannot.
+std::string read_file(const std::filesystem::path& path);
+
+}  // namespace cogmap::mapper::io

@@ -1,0 +1,86 @@
+// Crash-safe file replacement: temp file in the same directory, fsync, rename, fsync the
+// directory. rename(2) within one file system is atomic, so readers (and a restarted process)
+// see either the old file or the new one.
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "cogmap/mapper/io/asr_json.h"
+
+namespace cogmap::mapper::io {
+namespace {
+
+[[noreturn]] void fail_errno(const std::filesystem::path& path, const char* what) {
+  throw std::runtime_error(path.string() + ": " + what + ": " + std::strerror(errno));
+}
+
+/// Closes a file descriptor on scope exit.
+struct Fd {
+  int fd = -1;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+void write_file_atomic(const std::filesystem::path& path, std::string_view content) {
+  static std::atomic<unsigned long> counter{0};
+  const std::filesystem::path dir =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  const std::filesystem::path temp =
+      dir / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+             std::to_string(counter.fetch_add(1)));
+  {
+    Fd file{::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
+    if (file.fd < 0) fail_errno(temp, "cannot create");
+    const char* data = content.data();
+    std::size_t left = content.size();
+    while (left > 0) {
+      const ssize_t n = ::write(file.fd, data, left);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) {
+        const int saved = errno;
+        ::unlink(temp.c_str());
+        errno = saved;
+        fail_errno(temp, "cannot write");
+      }
+      data += n;
+      left -= static_cast<std::size_t>(n);
+    }
+    // The data must be on disk before the name points at it, or a crash could leave a
+    // renamed but empty file.
+    if (::fsync(file.fd) != 0) {
+      ::unlink(temp.c_str());
+      fail_errno(temp, "cannot fsync");
+    }
+  }
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    const int saved = errno;
+    ::unlink(temp.c_str());
+    errno = saved;
+    fail_errno(path, "cannot rename temp file over");
+  }
+  // The rename itself lives in the directory: sync it so the new name survives a crash.
+  Fd directory{::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
+  if (directory.fd < 0) fail_errno(dir, "cannot open directory");
+  if (::fsync(directory.fd) != 0) fail_errno(dir, "cannot fsync directory");
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open for reading");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw std::runtime_error(path.string() + ": read error");
+  return buffer.str();
+}
+
+}  // namespace cogmap::mapper::io
