@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cogmap/mapper/localization/localizer.h"
-#include "localization/synthetic_rooms.h"
+#include "synthetic_rooms.h"
 
 namespace cogmap::mapper {
 namespace {
