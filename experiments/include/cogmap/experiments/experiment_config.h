@@ -1,0 +1,71 @@
+#pragma once
+/// One experiment (experiments/*.yaml, docs/experiment-format.md): which world, which robot
+/// source, how to drive, how to map. Parsed strictly: unknown keys, wrong types and values out
+/// of range are ConfigErrors naming file, line and key.
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cogmap/mapper/mapper.h"
+#include "cogmap/mapper/seam/geometry.h"
+#include "cogmap/sim/yaml_strict.h"
+
+namespace cogmap::experiments {
+
+/// Where the frames come from (docs/formats.md `robot.source`).
+enum class RobotSource { kSim, kP2os, kLog };
+
+/// How the robot is driven (docs/formats.md `controller.type`).
+enum class ControllerKind { kRoute, kExplore, kNone };
+
+std::string_view to_string(RobotSource source);
+std::string_view to_string(ControllerKind kind);
+
+/// The `controller` block.
+struct ControllerConfig {
+  ControllerKind type = ControllerKind::kNone;
+  double speed_mps = 0.5;                 ///< cruise speed, thesis §4: about 0.5 m/s
+  std::vector<mapper::Point2> waypoints;  ///< world frame, metres (route only)
+  double waypoint_tolerance_m = 0.4;      ///< a waypoint counts as reached within this
+};
+
+/// A fully parsed experiment, overrides applied.
+struct Experiment {
+  std::filesystem::path file;   ///< the experiment file as given
+  std::string name;             ///< `name`
+  std::filesystem::path world;  ///< `world`, resolved against the experiment file's folder
+  std::uint64_t seed = 1;       ///< `seed` (or --seed)
+  double duration_s = 600.0;    ///< `duration_s`: upper bound of simulated (or real) time
+  RobotSource robot_source = RobotSource::kSim;
+  /// The whole `robot` block, validated later by the source's own parser
+  /// (sim::parse_sim_robot_options for `sim`, the hw module for `p2os`/`log`).
+  std::optional<yaml::Node> robot;
+  ControllerConfig controller;
+  mapper::MapperOptions mapper;  ///< `mapper` block; sonar range is filled in by the runner
+  bool figures = true;           ///< `output.figures`
+  /// The document after every override, as YAML text (saved into the run directory so a run
+  /// can be repeated exactly).
+  std::string resolved_yaml;
+};
+
+/// Loads and validates an experiment file. Each `overrides` entry is "a.b.c=value" (--set) and
+/// is applied to the document BEFORE validation, so an override naming an unknown key fails
+/// like a typo in the file. `seed_override` replaces `seed` (--seed).
+/// Throws yaml::ConfigError ("file:line: key: message") on any problem.
+Experiment load_experiment(const std::filesystem::path& path,
+                           const std::vector<std::string>& overrides = {},
+                           std::optional<std::uint64_t> seed_override = std::nullopt);
+
+/// Parses an already loaded document (used by load_experiment and by sweeps, which apply
+/// their own overrides). `file` is the path errors name and relative paths resolve against.
+Experiment parse_experiment(const yaml::Node& root, const std::filesystem::path& file);
+
+/// Parses the `mapper` block into MapperOptions (defaults: thesis Table 4.1).
+mapper::MapperOptions parse_mapper_options(const yaml::Node& block);
+
+}  // namespace cogmap::experiments

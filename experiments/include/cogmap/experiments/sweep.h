@@ -1,0 +1,59 @@
+#pragma once
+/// Sweeps (experiments/*.sweep.yaml, docs/sweeps.md): a base experiment, a list of seeds and
+/// lists of values for some keys; every combination is one run. Expansion order is stable, so
+/// `--shard K/N` partitions the same list on every machine.
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cogmap::experiments {
+
+/// One varied key and its values, each as the YAML text `--set` would take ("55", "himm").
+struct SweepAxis {
+  std::string key;                  ///< dotted experiment key, e.g. "mapper.cell_scale_mm"
+  std::vector<std::string> values;  ///< YAML flow text of each value
+};
+
+/// A parsed sweep file.
+struct SweepSpec {
+  std::filesystem::path file;
+  std::filesystem::path base;  ///< the base experiment, resolved against the sweep's folder
+  std::vector<std::uint64_t> seeds;
+  std::vector<SweepAxis> vary;  ///< in file order; the first is the x axis of the plots
+};
+
+/// One run of a sweep.
+struct SweepRun {
+  std::size_t index = 0;  ///< position in the stable expansion order
+  std::vector<std::pair<std::string, std::string>> values;  ///< (key, value text), vary order
+  std::uint64_t seed = 0;
+  /// Directory name under runs/: "key=value,...,seed=N" ('/' in values becomes '_').
+  std::string dir_name() const;
+  /// The --set assignments of this run ("key=value"), seed excluded.
+  std::vector<std::string> overrides() const;
+};
+
+/// Parses a sweep file strictly (keys: base, seeds, vary, description); throws
+/// yaml::ConfigError naming file, line and key.
+SweepSpec load_sweep(const std::filesystem::path& path);
+
+/// The cartesian product of the axes (first axis slowest, last fastest), then seeds innermost.
+std::vector<SweepRun> expand_sweep(const SweepSpec& spec);
+
+/// A shard "K/N" (1-based K): runs whose index i satisfies i % N == K − 1.
+struct Shard {
+  std::size_t k = 1;
+  std::size_t n = 1;
+};
+
+/// Parses "K/N" with 1 <= K <= N; throws std::invalid_argument with a readable message.
+Shard parse_shard(const std::string& text);
+
+/// The runs of one shard, in expansion order.
+std::vector<SweepRun> shard_runs(const std::vector<SweepRun>& runs, Shard shard);
+
+}  // namespace cogmap::experiments

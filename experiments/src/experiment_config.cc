@@ -1,0 +1,240 @@
+#include "cogmap/experiments/experiment_config.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace cogmap::experiments {
+namespace {
+
+using yaml::ConfigError;
+using yaml::Node;
+
+/// An optional number that must lie in [lo, hi]; `fallback` when absent.
+double number_in(const Node& block, const std::string& key, double lo, double hi, double fallback) {
+  const auto c = block.child(key);
+  if (!c) return fallback;
+  const double v = c->as<double>();
+  if (v < lo || v > hi) {
+    std::ostringstream msg;
+    msg << "must be in [" << lo << ", " << hi << "], got " << v;
+    c->fail(msg.str());
+  }
+  return v;
+}
+
+/// An optional number that must be > lo (strictly).
+double number_above(const Node& block, const std::string& key, double lo, double fallback) {
+  const auto c = block.child(key);
+  if (!c) return fallback;
+  const double v = c->as<double>();
+  if (!(v > lo)) {
+    std::ostringstream msg;
+    msg << "must be greater than " << lo << ", got " << v;
+    c->fail(msg.str());
+  }
+  return v;
+}
+
+RobotSource parse_source(const Node& n) {
+  const std::string s = n.as<std::string>();
+  if (s == "sim") return RobotSource::kSim;
+  if (s == "p2os") return RobotSource::kP2os;
+  if (s == "log") return RobotSource::kLog;
+  n.fail("unknown robot source '" + s + "' (expected sim, p2os or log)");
+}
+
+ControllerConfig parse_controller(const Node& block) {
+  block.expect_keys({"type", "speed_mps", "waypoints", "waypoint_tolerance_m"});
+  ControllerConfig c;
+  const Node type = block["type"];
+  const std::string t = type.as<std::string>();
+  if (t == "route") {
+    c.type = ControllerKind::kRoute;
+  } else if (t == "explore") {
+    c.type = ControllerKind::kExplore;
+  } else if (t == "none" || t == "teleop") {
+    c.type = ControllerKind::kNone;
+  } else {
+    type.fail("unknown controller type '" + t + "' (expected route, explore or none)");
+  }
+  c.speed_mps = number_in(block, "speed_mps", 0.01, 2.0, c.speed_mps);
+  c.waypoint_tolerance_m = number_above(block, "waypoint_tolerance_m", 0.0, c.waypoint_tolerance_m);
+  if (const auto wps = block.child("waypoints")) {
+    wps->expect_sequence();
+    for (std::size_t i = 0; i < wps->size(); ++i) {
+      const Node p = wps->at(i);
+      if (!p.is_sequence() || p.size() != 2) p.fail("a waypoint is [x_m, y_m]");
+      c.waypoints.emplace_back(p.at(0).as<double>(), p.at(1).as<double>());
+    }
+  }
+  if (c.type == ControllerKind::kRoute && c.waypoints.empty()) {
+    block.fail("a route controller needs at least one waypoint in 'waypoints'");
+  }
+  if (c.type != ControllerKind::kRoute && !c.waypoints.empty()) {
+    block["waypoints"].fail("waypoints are only used by a route controller");
+  }
+  return c;
+}
+
+// Re-raises an error caused by a --set override so it also says which override did it: the
+// overridden node has no line of its own, so the file line alone would point at its parent.
+[[noreturn]] void rethrow_with_override(const ConfigError& e,
+                                        const std::vector<std::string>& overrides) {
+  std::string message = e.what();
+  std::string prefix = e.file();
+  if (e.line() > 0) prefix += ":" + std::to_string(e.line());
+  prefix += ": ";
+  if (!e.key().empty()) prefix += e.key() + ": ";
+  if (message.starts_with(prefix)) message = message.substr(prefix.size());
+  for (const std::string& o : overrides) {
+    const std::string key = o.substr(0, o.find('='));
+    if (!e.key().empty() &&
+        (e.key() == key || e.key().starts_with(key + ".") || e.key().starts_with(key + "["))) {
+      throw ConfigError(e.file(), e.line(), e.key(), message + " (from --set " + o + ")");
+    }
+  }
+  throw e;
+}
+
+}  // namespace
+
+std::string_view to_string(RobotSource source) {
+  switch (source) {
+    case RobotSource::kSim:
+      return "sim";
+    case RobotSource::kP2os:
+      return "p2os";
+    case RobotSource::kLog:
+      return "log";
+  }
+  return "?";
+}
+
+std::string_view to_string(ControllerKind kind) {
+  switch (kind) {
+    case ControllerKind::kRoute:
+      return "route";
+    case ControllerKind::kExplore:
+      return "explore";
+    case ControllerKind::kNone:
+      return "none";
+  }
+  return "?";
+}
+
+mapper::MapperOptions parse_mapper_options(const Node& block) {
+  block.expect_keys({"grid", "cell_scale_mm", "occupied_threshold", "vertex_tolerance_cells",
+                     "polyline_gap_cells", "douglas_peucker_cells", "min_abs_correlation",
+                     "window_m", "asr_boundary", "asr_distance_m", "localization",
+                     "door_close_side_m", "min_room_travel_m", "min_room_duration_s",
+                     "max_correction_deg"});
+  mapper::MapperOptions o;
+  if (const auto g = block.child("grid")) {
+    const std::string name = g->as<std::string>();
+    // Parsed here rather than with mapper::parse_grid_kind so the names users type are checked
+    // in the same place as every other key (and the message lists them).
+    if (name == "himm") {
+      o.grid = mapper::GridKind::kHimm;
+    } else if (name == "mhimm") {
+      o.grid = mapper::GridKind::kMhimm;
+    } else if (name == "bayes") {
+      o.grid = mapper::GridKind::kBayes;
+    } else if (name == "dempster_shafer") {
+      o.grid = mapper::GridKind::kDempsterShafer;
+    } else {
+      g->fail("unknown grid '" + name + "' (expected himm, mhimm, bayes or dempster_shafer)");
+    }
+  }
+  o.grid_options.cell_scale_mm =
+      number_in(block, "cell_scale_mm", 10.0, 1000.0, o.grid_options.cell_scale_mm);
+  o.grid_options.window_m = number_above(block, "window_m", 0.0, o.grid_options.window_m);
+  // ε lives on the HIMM scale [-3, 15]; at or above the cap nothing would ever be occupied.
+  o.builder.occupied_threshold = number_in(
+      block, "occupied_threshold", 0.0, mapper::kHistogramMax - 1.0, o.builder.occupied_threshold);
+  o.builder.vertex_tolerance_cells =
+      number_in(block, "vertex_tolerance_cells", 0.0, 100.0, o.builder.vertex_tolerance_cells);
+  o.builder.polyline_gap_cells =
+      number_above(block, "polyline_gap_cells", 0.0, o.builder.polyline_gap_cells);
+  o.builder.douglas_peucker_cells =
+      number_in(block, "douglas_peucker_cells", 0.0, 100.0, o.builder.douglas_peucker_cells);
+  o.builder.min_abs_correlation =
+      number_in(block, "min_abs_correlation", 0.0, 1.0, o.builder.min_abs_correlation);
+  if (const auto b = block.child("asr_boundary")) {
+    const std::string s = b->as<std::string>();
+    if (s == "doorway") {
+      o.boundary = mapper::BoundaryKind::kDoorway;
+    } else if (s == "distance") {
+      o.boundary = mapper::BoundaryKind::kDistance;
+    } else {
+      b->fail("unknown asr_boundary '" + s + "' (expected doorway or distance)");
+    }
+  }
+  o.distance.asr_distance_m = number_above(block, "asr_distance_m", 0.0, o.distance.asr_distance_m);
+  o.doorway.close_side_m = number_above(block, "door_close_side_m", 0.0, o.doorway.close_side_m);
+  o.doorway.min_room_travel_m =
+      number_in(block, "min_room_travel_m", 0.0, 1000.0, o.doorway.min_room_travel_m);
+  o.min_room_duration_s = number_in(block, "min_room_duration_s", 0.0, 1e6, o.min_room_duration_s);
+  if (const auto l = block.child("localization")) {
+    const std::string s = l->as<std::string>();
+    if (s == "em") {
+      o.localization = mapper::LocalizationKind::kEm;
+    } else if (s == "none") {
+      o.localization = mapper::LocalizationKind::kNone;
+    } else {
+      l->fail("unknown localization '" + s + "' (expected em or none)");
+    }
+  }
+  const double max_corr_deg = number_in(block, "max_correction_deg", 0.0, 180.0,
+                                        o.localizer.max_correction_rad * 180.0 / std::numbers::pi);
+  o.localizer.max_correction_rad = max_corr_deg * std::numbers::pi / 180.0;
+  return o;
+}
+
+Experiment parse_experiment(const Node& root, const std::filesystem::path& file) {
+  root.expect_keys({"name", "description", "world", "seed", "duration_s", "robot", "controller",
+                    "mapper", "output"});
+  Experiment e;
+  e.file = file;
+  e.name = root.get<std::string>("name");
+  if (e.name.empty()) root["name"].fail("must not be empty");
+  if (const auto d = root.child("description")) (void)d->as<std::string>();
+  const std::string world = root.get<std::string>("world");
+  const std::filesystem::path world_path(world);
+  e.world = world_path.is_absolute() ? world_path : file.parent_path() / world_path;
+  e.world = e.world.lexically_normal();
+  e.seed = root.get_or<std::uint64_t>("seed", e.seed);
+  e.duration_s = number_above(root, "duration_s", 0.0, e.duration_s);
+
+  if (const auto robot = root.child("robot")) {
+    robot->expect_map();
+    if (const auto src = robot->child("source")) e.robot_source = parse_source(*src);
+    e.robot = *robot;
+  }
+  if (const auto c = root.child("controller")) e.controller = parse_controller(*c);
+  if (const auto m = root.child("mapper")) e.mapper = parse_mapper_options(*m);
+  if (const auto out = root.child("output")) {
+    out->expect_keys({"figures"});
+    e.figures = out->get_or<bool>("figures", e.figures);
+  }
+  YAML::Emitter emitter;
+  emitter << root.raw();
+  e.resolved_yaml = std::string(emitter.c_str()) + "\n";
+  return e;
+}
+
+Experiment load_experiment(const std::filesystem::path& path,
+                           const std::vector<std::string>& overrides,
+                           std::optional<std::uint64_t> seed_override) {
+  Node root = Node::load_file(path);
+  root.expect_map();
+  for (const std::string& o : overrides) yaml::apply_override(root.raw(), o);
+  if (seed_override) root.raw()["seed"] = *seed_override;
+  try {
+    return parse_experiment(root, path);
+  } catch (const ConfigError& e) {
+    rethrow_with_override(e, overrides);
+  }
+}
+
+}  // namespace cogmap::experiments

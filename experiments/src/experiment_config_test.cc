@@ -1,0 +1,157 @@
+#include "cogmap/experiments/experiment_config.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <numbers>
+
+namespace cogmap::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path write_temp(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "experiment_config_test";
+  fs::create_directories(dir);
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const char* const kGood = R"(name: two_rooms_route
+world: ../worlds/two_rooms.yaml
+seed: 7
+duration_s: 600
+robot:
+  source: sim
+  model: p2at
+controller:
+  type: route
+  speed_mps: 0.4
+  waypoints: [[2.5, 3.0], [7.5, 3.0]]
+mapper:
+  grid: bayes
+  cell_scale_mm: 55
+  occupied_threshold: 8
+  vertex_tolerance_cells: 3
+  polyline_gap_cells: 5
+  asr_boundary: distance
+  asr_distance_m: 4.0
+  localization: none
+  door_close_side_m: 0.7
+output:
+  figures: false
+)";
+
+std::string error_of(const fs::path& p, const std::vector<std::string>& overrides = {}) {
+  try {
+    (void)load_experiment(p, overrides);
+  } catch (const yaml::ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(ExperimentConfig, ParsesEveryKey) {
+  const fs::path p = write_temp("good.yaml", kGood);
+  const Experiment e = load_experiment(p);
+  EXPECT_EQ(e.name, "two_rooms_route");
+  EXPECT_EQ(e.world, (p.parent_path() / "../worlds/two_rooms.yaml").lexically_normal());
+  EXPECT_EQ(e.seed, 7u);
+  EXPECT_DOUBLE_EQ(e.duration_s, 600.0);
+  EXPECT_EQ(e.robot_source, RobotSource::kSim);
+  ASSERT_TRUE(e.robot.has_value());
+  EXPECT_EQ(e.controller.type, ControllerKind::kRoute);
+  EXPECT_DOUBLE_EQ(e.controller.speed_mps, 0.4);
+  ASSERT_EQ(e.controller.waypoints.size(), 2u);
+  EXPECT_DOUBLE_EQ(e.controller.waypoints[1].x(), 7.5);
+  EXPECT_EQ(e.mapper.grid, mapper::GridKind::kBayes);
+  EXPECT_DOUBLE_EQ(e.mapper.grid_options.cell_scale_mm, 55.0);
+  EXPECT_DOUBLE_EQ(e.mapper.builder.occupied_threshold, 8.0);
+  EXPECT_DOUBLE_EQ(e.mapper.builder.vertex_tolerance_cells, 3.0);
+  EXPECT_DOUBLE_EQ(e.mapper.builder.polyline_gap_cells, 5.0);
+  EXPECT_EQ(e.mapper.boundary, mapper::BoundaryKind::kDistance);
+  EXPECT_DOUBLE_EQ(e.mapper.distance.asr_distance_m, 4.0);
+  EXPECT_EQ(e.mapper.localization, mapper::LocalizationKind::kNone);
+  EXPECT_DOUBLE_EQ(e.mapper.doorway.close_side_m, 0.7);
+  EXPECT_FALSE(e.figures);
+}
+
+TEST(ExperimentConfig, DefaultsAreTheThesisValues) {
+  const fs::path p = write_temp("minimal.yaml", "name: m\nworld: w.yaml\n");
+  const Experiment e = load_experiment(p);
+  EXPECT_EQ(e.mapper.grid, mapper::GridKind::kMhimm);
+  EXPECT_DOUBLE_EQ(e.mapper.grid_options.cell_scale_mm, 100.0);    // ℘, Table 4.1
+  EXPECT_DOUBLE_EQ(e.mapper.builder.occupied_threshold, 7.0);      // ε
+  EXPECT_DOUBLE_EQ(e.mapper.builder.vertex_tolerance_cells, 2.0);  // τ
+  EXPECT_DOUBLE_EQ(e.mapper.builder.polyline_gap_cells, 4.0);      // γ
+  EXPECT_EQ(e.controller.type, ControllerKind::kNone);
+  EXPECT_TRUE(e.figures);
+}
+
+TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {
+  const fs::path p = write_temp("good2.yaml", kGood);
+  const Experiment e = load_experiment(
+      p, {"mapper.cell_scale_mm=85", "mapper.grid=himm", "output.figures=true"}, std::uint64_t{42});
+  EXPECT_DOUBLE_EQ(e.mapper.grid_options.cell_scale_mm, 85.0);
+  EXPECT_EQ(e.mapper.grid, mapper::GridKind::kHimm);
+  EXPECT_TRUE(e.figures);
+  EXPECT_EQ(e.seed, 42u);
+  EXPECT_NE(e.resolved_yaml.find("cell_scale_mm: 85"), std::string::npos);
+}
+
+TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
+  std::string text = kGood;
+  text.replace(text.find("  cell_scale_mm"), 15, "  cell_scale_nm");
+  const fs::path p = write_temp("typo.yaml", text);
+  EXPECT_EQ(error_of(p).rfind(p.string() + ":14: mapper.cell_scale_nm: unknown key", 0), 0u)
+      << error_of(p);
+}
+
+TEST(ExperimentConfig, WrongTypeNamesFileLineAndKey) {
+  std::string text = kGood;
+  text.replace(text.find("cell_scale_mm: 55"), 17, "cell_scale_mm: big");
+  const fs::path p = write_temp("type.yaml", text);
+  EXPECT_EQ(error_of(p),
+            p.string() + ":14: mapper.cell_scale_mm: expected a finite number, got 'big'");
+}
+
+TEST(ExperimentConfig, OutOfRangeAndBadEnumAreErrors) {
+  std::string text = kGood;
+  text.replace(text.find("grid: bayes"), 11, "grid: sonar");
+  const fs::path p = write_temp("enum.yaml", text);
+  EXPECT_NE(error_of(p).find(":13: mapper.grid: unknown grid 'sonar'"), std::string::npos)
+      << error_of(p);
+  const fs::path p2 = write_temp("range.yaml", kGood);
+  EXPECT_NE(error_of(p2, {"mapper.cell_scale_mm=0"}).find("mapper.cell_scale_mm: must be in"),
+            std::string::npos);
+}
+
+TEST(ExperimentConfig, OverrideOfUnknownKeyIsAnError) {
+  const fs::path p = write_temp("good3.yaml", kGood);
+  const std::string err = error_of(p, {"mapper.cel_scale_mm=55"});
+  EXPECT_EQ(err.rfind(p.string() + ":13: mapper.cel_scale_mm: unknown key", 0), 0u) << err;
+  EXPECT_NE(err.find("(from --set mapper.cel_scale_mm=55)"), std::string::npos) << err;
+  EXPECT_NE(error_of(p, {"nonsense"}).find("expected key=value"), std::string::npos);
+}
+
+TEST(ExperimentConfig, RouteNeedsWaypoints) {
+  const fs::path p =
+      write_temp("route.yaml", "name: r\nworld: w.yaml\ncontroller: {type: route}\n");
+  EXPECT_NE(error_of(p).find(":3: controller: a route controller needs"), std::string::npos)
+      << error_of(p);
+}
+
+TEST(ExperimentConfig, RecordsRealRobotSources) {
+  const fs::path p = write_temp("p2os.yaml", "name: r\nworld: w.yaml\nrobot: {source: p2os}\n");
+  EXPECT_EQ(load_experiment(p).robot_source, RobotSource::kP2os);
+  const fs::path bad = write_temp("src.yaml", "name: r\nworld: w.yaml\nrobot: {source: wifi}\n");
+  EXPECT_NE(error_of(bad).find("robot.source: unknown robot source 'wifi'"), std::string::npos);
+}
+
+TEST(ExperimentConfig, MissingFileIsAConfigError) {
+  EXPECT_NE(error_of("/nonexistent/x.yaml").find("cannot open file"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cogmap::experiments

@@ -1,0 +1,153 @@
+#include "cogmap/experiments/metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "cogmap/experiments/segment_index.h"
+
+namespace cogmap::experiments {
+
+using mapper::Point2;
+using mapper::Segment;
+
+std::vector<SurfaceSample> sample_segments(std::span<const Segment> segments, double step_m) {
+  std::vector<SurfaceSample> out;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& s = segments[i];
+    const double length = s.length_m();
+    if (!(length > 0.0)) continue;
+    // The small tolerance keeps a 1.0 m wall at 20 pieces, not 21, despite rounding.
+    const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil(length / step_m - 1e-9)));
+    const double w = length / static_cast<double>(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t = (static_cast<double>(k) + 0.5) / static_cast<double>(n);
+      out.push_back({s.a + t * (s.b - s.a), i, w});
+    }
+  }
+  return out;
+}
+
+std::vector<Point2> subsample_path(std::span<const Point2> path, double step_m) {
+  std::vector<Point2> out;
+  if (path.empty()) return out;
+  out.push_back(path.front());
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    if ((path[i] - out.back()).norm() >= step_m) out.push_back(path[i]);
+  }
+  if ((path.back() - out.back()).norm() > 0.0) out.push_back(path.back());
+  return out;
+}
+
+std::vector<SurfaceSample> visible_truth_samples(std::span<const Segment> truth,
+                                                 std::span<const Point2> true_path,
+                                                 const MapMetricsOptions& options) {
+  const SegmentIndex index(truth, options.index_cell_m);
+  const std::vector<Point2> poses = subsample_path(true_path, options.trajectory_step_m);
+  const double range2 = options.sonar_max_range_m * options.sonar_max_range_m;
+  // The sight line stops just short of the sample: a neighbouring surface that shares the
+  // sample's corner would otherwise "block" it.
+  constexpr double kEndGap_m = 0.01;
+  std::vector<SurfaceSample> visible;
+  for (const SurfaceSample& s : sample_segments(truth, options.sample_step_m)) {
+    for (const Point2& pose : poses) {
+      const Point2 d = pose - s.point;
+      const double dist2 = d.squaredNorm();
+      if (dist2 > range2) continue;
+      const double dist = std::sqrt(dist2);
+      if (dist <= kEndGap_m) {
+        visible.push_back(s);
+        break;
+      }
+      const Point2 near_sample = s.point + d * (kEndGap_m / dist);
+      if (!index.blocked(near_sample, pose, s.segment)) {
+        visible.push_back(s);
+        break;
+      }
+    }
+  }
+  return visible;
+}
+
+double quantile(std::vector<double>& values, double q) {
+  std::sort(values.begin(), values.end());
+  const double pos = q * static_cast<double>(values.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(pos));
+  const std::size_t hi = std::min(lo + 1, values.size() - 1);
+  const double frac = pos - static_cast<double>(lo);
+  return frac == 0.0 ? values[lo] : values[lo] + frac * (values[hi] - values[lo]);
+}
+
+MapAccuracy evaluate_map(std::span<const Segment> map, std::span<const Segment> truth,
+                         std::span<const SurfaceSample> visible, const MapMetricsOptions& options) {
+  MapAccuracy out;
+  out.segment_count = map.size();
+  const SegmentIndex truth_index(truth, options.index_cell_m);
+  std::vector<double> errors;
+  double spurious_m = 0.0;
+  for (const SurfaceSample& s : sample_segments(map, options.sample_step_m)) {
+    const double e = truth_index.nearest_distance_m(s.point);
+    errors.push_back(e);
+    out.map_length_m += s.weight_m;
+    if (e > options.spurious_distance_m) spurious_m += s.weight_m;
+  }
+  out.error_samples = errors.size();
+  if (!errors.empty()) {
+    out.wall_error_median_m = quantile(errors, 0.5);
+    out.wall_error_p90_m = quantile(errors, 0.9);
+  }
+  if (out.map_length_m > 0.0) out.spurious_fraction = spurious_m / out.map_length_m;
+
+  out.visible_truth_samples = visible.size();
+  if (!visible.empty()) {
+    const SegmentIndex map_index(map, options.index_cell_m);
+    std::size_t covered = 0;
+    for (const SurfaceSample& s : visible) {
+      if (map_index.nearest_distance_m(s.point) <= options.coverage_radius_m) ++covered;
+    }
+    out.wall_coverage = static_cast<double>(covered) / static_cast<double>(visible.size());
+  }
+  return out;
+}
+
+std::optional<LocalizationAccuracy> evaluate_trajectory(std::span<const TrajectoryRow> rows) {
+  LocalizationAccuracy out;
+  double sum_odom = 0.0, sum_est = 0.0;
+  const TrajectoryRow* last = nullptr;
+  for (const TrajectoryRow& r : rows) {
+    if (!r.truth) continue;
+    sum_odom += (r.odometry.translation() - r.truth->translation()).squaredNorm();
+    sum_est += (r.estimate.translation() - r.truth->translation()).squaredNorm();
+    ++out.frames;
+    last = &r;
+  }
+  if (last == nullptr) return std::nullopt;
+  const double n = static_cast<double>(out.frames);
+  out.ate_rmse_odometry_m = std::sqrt(sum_odom / n);
+  out.ate_rmse_corrected_m = std::sqrt(sum_est / n);
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  out.heading_error_final_odometry_deg =
+      std::abs(mapper::wrap_angle_rad(last->odometry.theta_rad - last->truth->theta_rad)) * kDeg;
+  out.heading_error_final_corrected_deg =
+      std::abs(mapper::wrap_angle_rad(last->estimate.theta_rad - last->truth->theta_rad)) * kDeg;
+  return out;
+}
+
+MemoryMetrics memory_metrics(std::span<const RoomSize> rooms) {
+  MemoryMetrics m;
+  for (const RoomSize& r : rooms) {
+    m.polyline_bytes += r.polyline_bytes;
+    m.grid_bytes = std::max(m.grid_bytes, r.grid_bytes);
+    m.grid_bytes_total += r.grid_bytes;
+    m.vertex_count += r.vertex_count;
+    m.extracted_vertex_count += r.extracted_vertex_count;
+  }
+  m.extracted_vertex_bytes = m.extracted_vertex_count * 2 * sizeof(float);
+  if (m.grid_bytes_total > 0) {
+    m.compression_ratio =
+        static_cast<double>(m.polyline_bytes) / static_cast<double>(m.grid_bytes_total);
+  }
+  return m;
+}
+
+}  // namespace cogmap::experiments

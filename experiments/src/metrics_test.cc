@@ -1,0 +1,194 @@
+#include "cogmap/experiments/metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cogmap/experiments/segment_index.h"
+
+namespace cogmap::experiments {
+namespace {
+
+using mapper::Point2;
+using mapper::Pose2;
+using mapper::Segment;
+
+// A closed 4 x 3 m box of single surfaces (inner faces only), and a path through its middle.
+std::vector<Segment> box() {
+  return {{{0, 0}, {4, 0}}, {{4, 0}, {4, 3}}, {{4, 3}, {0, 3}}, {{0, 3}, {0, 0}}};
+}
+std::vector<Point2> path_in_box() { return {{1.0, 1.5}, {2.0, 1.5}, {3.0, 1.5}}; }
+
+TEST(Quantile, MedianAndP90Interpolate) {
+  std::vector<double> v{4, 1, 3, 2};
+  EXPECT_DOUBLE_EQ(quantile(v, 0.5), 2.5);
+  std::vector<double> w{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+  EXPECT_DOUBLE_EQ(quantile(w, 0.9), 9.0);
+  std::vector<double> one{0.7};
+  EXPECT_DOUBLE_EQ(quantile(one, 0.9), 0.7);
+}
+
+TEST(SampleSegments, EqualPiecesAtMidpoints) {
+  const std::vector<Segment> s{{{0, 0}, {1, 0}}};
+  const auto samples = sample_segments(s, 0.05);
+  ASSERT_EQ(samples.size(), 20u);
+  EXPECT_NEAR(samples.front().point.x(), 0.025, 1e-12);
+  EXPECT_NEAR(samples.back().point.x(), 0.975, 1e-12);
+  EXPECT_NEAR(samples[3].weight_m, 0.05, 1e-12);
+}
+
+TEST(SegmentIndex, NearestDistanceMatchesBruteForce) {
+  std::vector<Segment> segs;
+  for (int i = 0; i < 40; ++i) {
+    const double a = i * 0.7;
+    segs.push_back({{std::cos(a) * i * 0.3, std::sin(a) * i * 0.2},
+                    {std::cos(a) * i * 0.3 + 0.5, std::sin(a) * i * 0.2 - 0.4}});
+  }
+  const SegmentIndex index(segs, 0.5);
+  for (int k = 0; k < 200; ++k) {
+    const Point2 p(std::sin(k * 1.3) * 15.0, std::cos(k * 0.9) * 12.0 + k * 0.05);
+    double brute = INFINITY;
+    for (const auto& s : segs) brute = std::min(brute, mapper::distance_to_segment_m(p, s));
+    EXPECT_DOUBLE_EQ(index.nearest_distance_m(p), brute) << k;
+  }
+  EXPECT_DOUBLE_EQ(index.nearest_distance_m({100.0, 0.0}), [&] {
+    double b = INFINITY;
+    for (const auto& s : segs) b = std::min(b, mapper::distance_to_segment_m({100.0, 0.0}, s));
+    return b;
+  }());
+}
+
+TEST(SegmentIndex, BlockedHonoursExclusion) {
+  const std::vector<Segment> segs{{{1, -1}, {1, 1}}, {{3, -1}, {3, 1}}};
+  const SegmentIndex index(segs, 0.5);
+  EXPECT_TRUE(index.blocked({0, 0}, {2, 0}, SegmentIndex::kNone));
+  EXPECT_FALSE(index.blocked({0, 0}, {2, 0}, 0));
+  EXPECT_FALSE(index.blocked({0, 2}, {5, 2}, SegmentIndex::kNone));
+  EXPECT_TRUE(index.blocked({5, 0.5}, {0, 0.5}, 0));  // the other wall still blocks
+}
+
+TEST(MapMetrics, MapEqualToTruthIsPerfect) {
+  const auto truth = box();
+  const MapMetricsOptions opt;
+  const auto visible = visible_truth_samples(truth, path_in_box(), opt);
+  EXPECT_EQ(visible.size(), 280u);  // 14 m of surface in 5 cm pieces, all in view
+  const MapAccuracy a = evaluate_map(truth, truth, visible, opt);
+  EXPECT_DOUBLE_EQ(*a.wall_error_median_m, 0.0);
+  EXPECT_DOUBLE_EQ(*a.wall_error_p90_m, 0.0);
+  EXPECT_DOUBLE_EQ(*a.wall_coverage, 1.0);
+  EXPECT_DOUBLE_EQ(*a.spurious_fraction, 0.0);
+  EXPECT_NEAR(a.map_length_m, 14.0, 1e-9);
+  EXPECT_EQ(a.segment_count, 4u);
+}
+
+TEST(MapMetrics, OffsetMapHasThatError) {
+  // Two long parallel walls 4 m apart; the map shifts each 0.1 m into the corridor, so every
+  // sample sits exactly 0.1 m from its true wall (and far from the other).
+  const std::vector<Segment> truth{{{0, 0}, {10, 0}}, {{0, 4}, {10, 4}}};
+  const std::vector<Segment> map{{{0, 0.1}, {10, 0.1}}, {{0, 3.9}, {10, 3.9}}};
+  const MapMetricsOptions opt;
+  const std::vector<Point2> path{{0, 2}, {10, 2}};
+  const auto visible = visible_truth_samples(truth, path, opt);
+  const MapAccuracy a = evaluate_map(map, truth, visible, opt);
+  EXPECT_NEAR(*a.wall_error_median_m, 0.1, 1e-12);
+  EXPECT_NEAR(*a.wall_error_p90_m, 0.1, 1e-12);
+  EXPECT_DOUBLE_EQ(*a.spurious_fraction, 0.0);
+  EXPECT_DOUBLE_EQ(*a.wall_coverage, 1.0);  // 0.1 m is within the 0.2 m coverage radius
+  // Shifted by 0.25 m: still not spurious (< 0.3 m) but no longer covering.
+  const std::vector<Segment> far{{{0, 0.25}, {10, 0.25}}, {{0, 3.75}, {10, 3.75}}};
+  const MapAccuracy b = evaluate_map(far, truth, visible, opt);
+  EXPECT_NEAR(*b.wall_error_median_m, 0.25, 1e-12);
+  EXPECT_DOUBLE_EQ(*b.wall_coverage, 0.0);
+  EXPECT_DOUBLE_EQ(*b.spurious_fraction, 0.0);
+}
+
+TEST(MapMetrics, SpuriousSegmentOfKnownLength) {
+  auto map = box();                         // 14 m of correct walls
+  map.push_back({{1.0, 1.0}, {2.0, 1.0}});  // 1 m phantom wall, >= 1 m from every surface
+  map.push_back({{1.0, 1.2}, {3.0, 1.2}});  // and 2 m more, 1.2 m away: 3 m spurious in all
+  const auto truth = box();
+  const MapMetricsOptions opt;
+  const auto visible = visible_truth_samples(truth, path_in_box(), opt);
+  const MapAccuracy a = evaluate_map(map, truth, visible, opt);
+  EXPECT_NEAR(*a.spurious_fraction, 3.0 / 17.0, 1e-12);
+  EXPECT_NEAR(a.map_length_m, 17.0, 1e-9);
+  EXPECT_DOUBLE_EQ(*a.wall_coverage, 1.0);
+}
+
+TEST(MapMetrics, OccludedSurfaceIsExcludedFromCoverage) {
+  // The robot drives along y = 1 below a 4 m wall at y = 2 (both faces as one segment). A
+  // second 4 m wall at y = 3 hides behind it: its samples are within range but never in view.
+  const std::vector<Segment> truth{{{0, 2}, {4, 2}}, {{0, 3}, {4, 3}}};
+  const std::vector<Point2> path{{0.5, 1}, {2, 1}, {3.5, 1}};
+  const MapMetricsOptions opt;
+  const auto visible = visible_truth_samples(truth, path, opt);
+  ASSERT_EQ(visible.size(), 80u);
+  for (const auto& s : visible) EXPECT_EQ(s.segment, 0u);
+  // A map of just the front wall covers everything that could be seen.
+  const std::vector<Segment> map{{{0, 2}, {4, 2}}};
+  EXPECT_DOUBLE_EQ(*evaluate_map(map, truth, visible, opt).wall_coverage, 1.0);
+  // Half of the front wall covers half.
+  const std::vector<Segment> half{{{0, 2}, {2, 2}}};
+  EXPECT_NEAR(*evaluate_map(half, truth, visible, opt).wall_coverage, 0.5 + 4.0 / 80.0, 1e-12);
+}
+
+TEST(MapMetrics, OutOfRangeSurfaceIsExcluded) {
+  const std::vector<Segment> truth{{{0, 0}, {1, 0}}, {{0, 10}, {1, 10}}};
+  const std::vector<Point2> path{{0.5, 1.0}};
+  MapMetricsOptions opt;
+  opt.sonar_max_range_m = 5.0;
+  EXPECT_EQ(visible_truth_samples(truth, path, opt).size(), 20u);
+}
+
+TEST(MapMetrics, EmptyMapHasUndefinedErrorAndZeroCoverage) {
+  const auto truth = box();
+  const MapMetricsOptions opt;
+  const auto visible = visible_truth_samples(truth, path_in_box(), opt);
+  const MapAccuracy a = evaluate_map({}, truth, visible, opt);
+  EXPECT_FALSE(a.wall_error_median_m.has_value());
+  EXPECT_FALSE(a.spurious_fraction.has_value());
+  EXPECT_DOUBLE_EQ(*a.wall_coverage, 0.0);
+}
+
+TEST(TrajectoryMetrics, AteAndFinalHeading) {
+  std::vector<TrajectoryRow> rows;
+  for (int i = 0; i < 4; ++i) {
+    TrajectoryRow r;
+    r.t_s = i * 0.1;
+    r.truth = Pose2{double(i), 0.0, 0.0};
+    r.odometry = Pose2{double(i), 3.0, 0.1};                           // always 3 m off
+    r.estimate = Pose2{double(i) + (i % 2 ? 1.0 : -1.0), 0.0, -0.02};  // always 1 m off
+    rows.push_back(r);
+  }
+  rows.back().truth->theta_rad = std::numbers::pi - 0.05;
+  rows.back().odometry.theta_rad = -std::numbers::pi + 0.05;  // 0.1 rad across the wrap
+  const auto m = evaluate_trajectory(rows);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_DOUBLE_EQ(m->ate_rmse_odometry_m, 3.0);
+  EXPECT_DOUBLE_EQ(m->ate_rmse_corrected_m, 1.0);
+  EXPECT_NEAR(m->heading_error_final_odometry_deg, 0.1 * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_NEAR(m->heading_error_final_corrected_deg,
+              180.0 - (0.05 - 0.02) * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_EQ(m->frames, 4u);
+}
+
+TEST(TrajectoryMetrics, NoTruthNoMetrics) {
+  std::vector<TrajectoryRow> rows(3);
+  EXPECT_FALSE(evaluate_trajectory(rows).has_value());
+}
+
+TEST(MemoryMetrics, SumsPeakAndRatio) {
+  const std::vector<RoomSize> rooms{{0, 2, 10, 80, 1000, 40000}, {1, 1, 4, 40, 500, 60000}};
+  const MemoryMetrics m = memory_metrics(rooms);
+  EXPECT_EQ(m.polyline_bytes, 1500u);
+  EXPECT_EQ(m.grid_bytes, 60000u);
+  EXPECT_EQ(m.grid_bytes_total, 100000u);
+  EXPECT_EQ(m.vertex_count, 14u);
+  EXPECT_EQ(m.extracted_vertex_count, 120u);
+  EXPECT_EQ(m.extracted_vertex_bytes, 960u);
+  EXPECT_DOUBLE_EQ(*m.compression_ratio, 0.015);
+}
+
+}  // namespace
+}  // namespace cogmap::experiments

@@ -1,0 +1,47 @@
+#include "cogmap/experiments/ros_map.h"
+
+#include "cogmap/experiments/atomic_file.h"
+#include "cogmap/experiments/number_format.h"
+
+namespace cogmap::experiments {
+
+std::string histogram_to_pgm(const mapper::HistogramGrid& grid, double occupied_threshold) {
+  const int w = grid.width(), h = grid.height();
+  std::string out = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+  out.reserve(out.size() + static_cast<std::size_t>(w) * h);
+  // PGM rows run top to bottom; grid rows run with y upwards, so the last row comes first.
+  for (int y = h - 1; y >= 0; --y) {
+    for (int x = 0; x < w; ++x) {
+      const float v = grid.get({x, y});
+      unsigned char px = kPgmUnknown;
+      if (v > occupied_threshold) {
+        px = kPgmOccupied;
+      } else if (v < 0.0f) {
+        px = kPgmFree;
+      }
+      out.push_back(static_cast<char>(px));
+    }
+  }
+  return out;
+}
+
+std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string& image_name) {
+  std::string out;
+  out += "# cogmap room grid; the origin is in the room's local (ASR) frame, metres\n";
+  out += "image: " + image_name + "\n";
+  out += "resolution: " + format_double(geometry.cell_size_m()) + "\n";
+  out += "origin: [" + format_double(geometry.origin_x_m()) + ", " +
+         format_double(geometry.origin_y_m()) + ", 0.0]\n";
+  out += "negate: 0\n";
+  out += "occupied_thresh: 0.65\n";
+  out += "free_thresh: 0.196\n";
+  return out;
+}
+
+void write_ros_map(const mapper::HistogramGrid& grid, double occupied_threshold,
+                   const std::filesystem::path& dir, const std::string& stem) {
+  write_file_atomic(dir / (stem + ".pgm"), histogram_to_pgm(grid, occupied_threshold));
+  write_file_atomic(dir / (stem + ".yaml"), ros_map_yaml(grid.geometry(), stem + ".pgm"));
+}
+
+}  // namespace cogmap::experiments

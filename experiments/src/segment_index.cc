@@ -1,0 +1,156 @@
+#include "cogmap/experiments/segment_index.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cogmap::experiments {
+namespace {
+
+using mapper::Point2;
+
+// Caps the bucket array so a stray far-away segment cannot make the index huge.
+constexpr double kMaxCells = 4.0e6;
+
+double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Sign of the orientation of (a, b, c) with a tolerance relative to the lengths involved.
+int orientation(const Point2& a, const Point2& b, const Point2& c) {
+  const double v = cross(b - a, c - a);
+  const double scale = (b - a).norm() * (c - a).norm();
+  const double eps = 1e-12 * std::max(1.0, scale);
+  return v > eps ? 1 : (v < -eps ? -1 : 0);
+}
+
+bool on_segment(const Point2& a, const Point2& b, const Point2& p) {
+  return std::min(a.x(), b.x()) - 1e-12 <= p.x() && p.x() <= std::max(a.x(), b.x()) + 1e-12 &&
+         std::min(a.y(), b.y()) - 1e-12 <= p.y() && p.y() <= std::max(a.y(), b.y()) + 1e-12;
+}
+
+}  // namespace
+
+bool segments_intersect(const Point2& p1, const Point2& p2, const Point2& q1, const Point2& q2) {
+  const int o1 = orientation(p1, p2, q1), o2 = orientation(p1, p2, q2);
+  const int o3 = orientation(q1, q2, p1), o4 = orientation(q1, q2, p2);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // a proper crossing
+  // Touching: an endpoint lies on the other segment.
+  if (o1 == 0 && on_segment(p1, p2, q1)) return true;
+  if (o2 == 0 && on_segment(p1, p2, q2)) return true;
+  if (o3 == 0 && on_segment(q1, q2, p1)) return true;
+  if (o4 == 0 && on_segment(q1, q2, p2)) return true;
+  return false;
+}
+
+SegmentIndex::SegmentIndex(std::span<const mapper::Segment> segments, double cell_m)
+    : segments_(segments.begin(), segments.end()), cell_m_(cell_m) {
+  if (segments_.empty()) return;
+  double min_x = std::numeric_limits<double>::infinity(), min_y = min_x;
+  double max_x = -min_x, max_y = -min_x;
+  for (const auto& s : segments_) {
+    min_x = std::min({min_x, s.a.x(), s.b.x()});
+    min_y = std::min({min_y, s.a.y(), s.b.y()});
+    max_x = std::max({max_x, s.a.x(), s.b.x()});
+    max_y = std::max({max_y, s.a.y(), s.b.y()});
+  }
+  const double span_x = max_x - min_x, span_y = max_y - min_y;
+  if ((span_x / cell_m_ + 2.0) * (span_y / cell_m_ + 2.0) > kMaxCells) {
+    cell_m_ = std::sqrt((span_x + 2.0) * (span_y + 2.0) / kMaxCells) + cell_m_;
+  }
+  origin_x_m_ = min_x - cell_m_;
+  origin_y_m_ = min_y - cell_m_;
+  width_ = static_cast<int>(std::floor(span_x / cell_m_)) + 3;
+  height_ = static_cast<int>(std::floor(span_y / cell_m_)) + 3;
+  buckets_.assign(static_cast<std::size_t>(width_) * height_, {});
+  // A segment goes into every cell it touches: a cell is touched when the segment passes
+  // within half a diagonal of its centre (a tiny superset, which keeps queries exact).
+  const double reach = cell_m_ * std::sqrt(0.5) * (1.0 + 1e-9) + 1e-12;
+  for (std::size_t i = 0; i < segments_.size(); ++i) {
+    const auto& s = segments_[i];
+    const Cell lo = cell_of({std::min(s.a.x(), s.b.x()), std::min(s.a.y(), s.b.y())});
+    const Cell hi = cell_of({std::max(s.a.x(), s.b.x()), std::max(s.a.y(), s.b.y())});
+    for (int y = std::max(0, lo.y - 1); y <= std::min(height_ - 1, hi.y + 1); ++y) {
+      for (int x = std::max(0, lo.x - 1); x <= std::min(width_ - 1, hi.x + 1); ++x) {
+        const Point2 center(origin_x_m_ + (x + 0.5) * cell_m_, origin_y_m_ + (y + 0.5) * cell_m_);
+        if (mapper::distance_to_segment_m(center, s) <= reach) {
+          buckets_[static_cast<std::size_t>(y) * width_ + x].push_back(
+              static_cast<std::uint32_t>(i));
+        }
+      }
+    }
+  }
+}
+
+SegmentIndex::Cell SegmentIndex::cell_of(const Point2& p) const {
+  return {static_cast<int>(std::floor((p.x() - origin_x_m_) / cell_m_)),
+          static_cast<int>(std::floor((p.y() - origin_y_m_) / cell_m_))};
+}
+
+const std::vector<std::uint32_t>* SegmentIndex::bucket(int x, int y) const {
+  if (x < 0 || y < 0 || x >= width_ || y >= height_) return nullptr;
+  return &buckets_[static_cast<std::size_t>(y) * width_ + x];
+}
+
+double SegmentIndex::nearest_distance_m(const Point2& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  if (segments_.empty()) return best;
+  const Cell c = cell_of(p);
+  const int max_ring = std::max(
+      {std::abs(c.x), std::abs(c.x - (width_ - 1)), std::abs(c.y), std::abs(c.y - (height_ - 1))});
+  auto visit = [&](int x, int y) {
+    if (const auto* b = bucket(x, y)) {
+      for (const std::uint32_t i : *b) {
+        best = std::min(best, mapper::distance_to_segment_m(p, segments_[i]));
+      }
+    }
+  };
+  for (int r = 0; r <= max_ring; ++r) {
+    for (int dy = -r; dy <= r; ++dy) {
+      if (dy == -r || dy == r) {
+        for (int dx = -r; dx <= r; ++dx) visit(c.x + dx, c.y + dy);
+      } else {
+        visit(c.x - r, c.y + dy);
+        if (r > 0) visit(c.x + r, c.y + dy);
+      }
+    }
+    // Every cell of ring r+1 or beyond lies at least r cells away from p's own cell.
+    if (best <= r * cell_m_) break;
+  }
+  return best;
+}
+
+bool SegmentIndex::blocked(const Point2& a, const Point2& b, std::size_t exclude) const {
+  if (segments_.empty()) return false;
+  // Amanatides-Woo traversal of the cells the segment crosses, starting at `a`, so the
+  // occluder nearest to `a` (usually in the first cells) ends the walk early.
+  const double sx = (a.x() - origin_x_m_) / cell_m_, sy = (a.y() - origin_y_m_) / cell_m_;
+  const double ex = (b.x() - origin_x_m_) / cell_m_, ey = (b.y() - origin_y_m_) / cell_m_;
+  int ix = static_cast<int>(std::floor(sx)), iy = static_cast<int>(std::floor(sy));
+  const int end_x = static_cast<int>(std::floor(ex)), end_y = static_cast<int>(std::floor(ey));
+  const double dx = ex - sx, dy = ey - sy;
+  const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
+  const double inf = std::numeric_limits<double>::infinity();
+  double t_max_x = dx != 0 ? (step_x > 0 ? ix + 1 - sx : sx - ix) / std::abs(dx) : inf;
+  double t_max_y = dy != 0 ? (step_y > 0 ? iy + 1 - sy : sy - iy) / std::abs(dy) : inf;
+  const double t_delta_x = dx != 0 ? 1.0 / std::abs(dx) : inf;
+  const double t_delta_y = dy != 0 ? 1.0 / std::abs(dy) : inf;
+  const int max_steps = std::abs(end_x - ix) + std::abs(end_y - iy) + 2;
+  for (int step = 0; step <= max_steps; ++step) {
+    if (const auto* cell = bucket(ix, iy)) {
+      for (const std::uint32_t i : *cell) {
+        if (i == exclude) continue;
+        if (segments_intersect(a, b, segments_[i].a, segments_[i].b)) return true;
+      }
+    }
+    if (ix == end_x && iy == end_y) break;
+    if (t_max_x < t_max_y) {
+      ix += step_x;
+      t_max_x += t_delta_x;
+    } else {
+      iy += step_y;
+      t_max_y += t_delta_y;
+    }
+  }
+  return false;
+}
+
+}  // namespace cogmap::experiments
