@@ -1,0 +1,92 @@
+#pragma once
+/// A simulated world as written in worlds/*.yaml (docs/formats.md, docs/worlds.md): walls as
+/// thick polylines, obstacles as boxes, circles and polygons, and the robot's start pose.
+/// Loading is strict: every mistake is a cogmap::yaml::ConfigError naming file, line and key.
+
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "cogmap/mapper/seam/geometry.h"
+#include "cogmap/mapper/seam/pose2.h"
+#include "cogmap/sim/yaml_strict.h"
+
+namespace cogmap::sim {
+
+/// Default wall thickness when `walls.thickness_m` is absent, metres (a plaster wall).
+inline constexpr double kDefaultWallThicknessM = 0.12;
+
+/// Where a YAML element came from, so later checks (start clearance) can still name it.
+struct SourceRef {
+  int line = 0;     ///< 1-based line in the world file, 0 when unknown
+  std::string key;  ///< key path, e.g. "obstacles[2].box"
+};
+
+/// One wall: a polyline whose surfaces lie thickness_m / 2 either side of the line.
+struct WallPolyline {
+  mapper::Polyline points;  ///< world frame, metres; at least 2, no zero-length segment
+  double thickness_m = kDefaultWallThicknessM;
+  SourceRef source;
+
+  /// True when the first and last points coincide (the wall closes on itself: no end caps).
+  bool closed() const;
+};
+
+/// A rectangle of furniture, centred at `center`, rotated by angle_rad (CCW).
+struct BoxObstacle {
+  mapper::Point2 center{0.0, 0.0};  ///< metres
+  double length_m = 0.0;            ///< along the box's own x (before rotation), > 0
+  double width_m = 0.0;             ///< along the box's own y, > 0
+  double angle_rad = 0.0;           ///< CCW rotation (the file says angle_deg)
+};
+
+/// A round obstacle (chair, bin, pillar).
+struct CircleObstacle {
+  mapper::Point2 center{0.0, 0.0};  ///< metres
+  double radius_m = 0.0;            ///< > 0
+};
+
+/// A simple (non self-intersecting) polygon with non-zero area; either winding.
+struct PolygonObstacle {
+  mapper::Polyline points;  ///< at least 3 vertices, not repeated at the end
+};
+
+/// One obstacle of the world.
+struct Obstacle {
+  std::variant<BoxObstacle, CircleObstacle, PolygonObstacle> shape;
+  SourceRef source;
+};
+
+/// The whole world file, parsed and checked.
+struct WorldSpec {
+  std::string name;
+  std::string description;
+  std::vector<WallPolyline> walls;
+  std::vector<Obstacle> obstacles;
+  mapper::Pose2 start;         ///< the robot's true start pose, world frame
+  SourceRef start_source;      ///< where `start` was written
+  std::filesystem::path file;  ///< the file it came from (empty for text)
+};
+
+/// Options of the checks that need the robot (start clearance).
+struct WorldCheckOptions {
+  /// Clearance the start pose needs from every surface, metres; default half the P2-AT's
+  /// 0.505 m width (docs/p2at.md), so the robot can at least turn on the spot's centre line.
+  double start_clearance_m = 0.2525;
+};
+
+/// Loads and validates a world file. Throws yaml::ConfigError ("file:line: key: message").
+WorldSpec load_world(const std::filesystem::path& path, const WorldCheckOptions& options = {});
+
+/// Parses and validates an already loaded document (tests, embedded worlds).
+WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options = {});
+
+/// The outline of an obstacle as a closed polygon (last vertex not repeated), world frame;
+/// circles become regular `circle_sides`-gons with vertices on the circle.
+mapper::Polyline obstacle_outline(const Obstacle& obstacle, int circle_sides = 48);
+
+/// Axis-aligned bounds of every wall and obstacle, metres: {min corner, max corner}.
+std::pair<mapper::Point2, mapper::Point2> world_bounds(const WorldSpec& world);
+
+}  // namespace cogmap::sim

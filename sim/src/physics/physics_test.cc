@@ -1,0 +1,85 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cogmap/sim/motion_limiter.h"
+#include "cogmap/sim/physics_world.h"
+#include "cogmap/sim/stall_detector.h"
+
+namespace cogmap::sim {
+namespace {
+
+WorldSpec parse(const std::string& text) {
+  return parse_world(yaml::Node::load_string(text, "p.yaml"));
+}
+
+TEST(MotionLimiter, RampsAtAccelAndDecelLimits) {
+  MotionLimiter limiter;  // 0.3 m/s² up, 0.6 m/s² down, 0.75 m/s top
+  for (int i = 0; i < 10; ++i) limiter.step({1.0, 0.0}, 0.1);
+  EXPECT_NEAR(limiter.current().v_mps, 0.3, 1e-12);  // 1 s at 0.3 m/s²
+  for (int i = 0; i < 100; ++i) limiter.step({1.0, 0.0}, 0.1);
+  EXPECT_DOUBLE_EQ(limiter.current().v_mps, 0.75);  // clamped to the top speed
+  limiter.step({0.0, 0.0}, 0.5);
+  EXPECT_NEAR(limiter.current().v_mps, 0.45, 1e-12);  // braking at 0.6 m/s²
+  limiter.step({-0.5, 0.0}, 1.0);
+  EXPECT_NEAR(limiter.current().v_mps, -0.15, 1e-12);  // a reversal brakes through zero
+  const auto c = limiter.clamp({-2.0, 5.0});
+  EXPECT_DOUBLE_EQ(c.v_mps, -0.75);
+  EXPECT_DOUBLE_EQ(c.w_radps, 1.74);
+}
+
+TEST(StallDetector, NeedsPersistenceOrContact) {
+  StallDetector d;
+  const WheelSpeeds wheels{0.5, 0.5};
+  const BodyTwist expected{0.5, 0.0};
+  const BodyTwist blocked{0.05, 0.0};  // 10 % of the expected speed
+  // Steps of 1/16 s are exact in binary: 0.25 s is not yet a stall, 0.3125 s is.
+  for (int i = 0; i < 4; ++i) d.update(wheels, expected, blocked, false, 0.0625);
+  EXPECT_FALSE(d.left());
+  d.update(wheels, expected, blocked, false, 0.0625);
+  EXPECT_TRUE(d.left());
+  EXPECT_TRUE(d.right());
+  d.update(wheels, expected, {0.4, 0.0}, false, 0.01);  // moving again
+  EXPECT_FALSE(d.left());
+  d.update(wheels, expected, blocked, true, 0.01);  // pushing against a wall: at once
+  EXPECT_TRUE(d.left());
+  StallDetector idle;
+  idle.update({0.0, 0.0}, {}, {}, true, 1.0);  // not driven: never stalled
+  EXPECT_FALSE(idle.left());
+  // Spinning left with the right side blocked: only the right flags.
+  StallDetector spin;
+  spin.update({-0.2, 0.2}, {0.0, 1.0}, {-0.0985, 0.5}, true, 0.01);
+  EXPECT_FALSE(spin.left());
+  EXPECT_TRUE(spin.right());
+}
+
+TEST(PhysicsWorld, FreeMotionFollowsTheArcExactly) {
+  const WorldSpec w = parse("name: open\nwalls: {polylines: []}\nstart: {x_m: 1, y_m: 2}\n");
+  PhysicsWorld physics(w);
+  mapper::Pose2 expected = w.start;
+  for (int i = 0; i < 500; ++i) {
+    physics.step({0.5, 0.4}, 0.01);
+    expected = advance_pose(expected, 0.5 * 0.01, 0.4 * 0.01);
+  }
+  EXPECT_FALSE(physics.in_contact());
+  EXPECT_DOUBLE_EQ(physics.pose().x_m, expected.x_m);
+  EXPECT_DOUBLE_EQ(physics.pose().y_m, expected.y_m);
+  EXPECT_DOUBLE_EQ(physics.pose().theta_rad, expected.theta_rad);
+}
+
+TEST(PhysicsWorld, WallStopsTheBody) {
+  const WorldSpec w = parse(
+      "name: wall\nwalls: {thickness_m: 0.12, polylines: [[[3, -2], [3, 2]]]}\n"
+      "start: {x_m: 1, y_m: 0}\n");
+  PhysicsWorld physics(w);
+  for (int i = 0; i < 1000; ++i) physics.step({0.5, 0.0}, 0.01);
+  EXPECT_TRUE(physics.in_contact());
+  // Front face at x + 0.313 m meets the wall face at 2.94 m (Box2D keeps a ~1 cm skin).
+  EXPECT_LT(physics.pose().x_m, 2.94 - 0.313 + 0.011);
+  EXPECT_GT(physics.pose().x_m, 2.94 - 0.313 - 0.02);
+  EXPECT_NEAR(physics.pose().y_m, 0.0, 1e-3);
+  EXPECT_NEAR(physics.pose().theta_rad, 0.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace cogmap::sim

@@ -1,0 +1,106 @@
+#include "cogmap/sim/physics_world.h"
+
+#include <box2d/box2d.h>
+
+#include <cmath>
+
+#include "cogmap/sim/world_geometry.h"
+#include "world/polygon_ops.h"
+
+namespace cogmap::sim {
+
+namespace {
+
+// Triangles thinner than this (m²) would trip Box2D's hull welding; validation already
+// rejects polygons under 1 cm², so only slivers of an ear-clipped polygon can hit it.
+constexpr double kMinFixtureAreaM2 = 1e-5;
+
+b2Vec2 to_b2(const mapper::Point2& p) {
+  return {static_cast<float>(p.x()), static_cast<float>(p.y())};
+}
+
+int add_convex(b2Body* body, const mapper::Polyline& outline) {
+  if (std::abs(geom::signed_area(outline)) < kMinFixtureAreaM2) return 0;
+  std::vector<b2Vec2> pts;
+  for (const mapper::Point2& p : outline) pts.push_back(to_b2(p));
+  b2PolygonShape shape;
+  shape.Set(pts.data(), static_cast<int32>(pts.size()));
+  body->CreateFixture(&shape, 0.0f);
+  return 1;
+}
+
+int add_piece(b2Body* body, const SolidPiece& piece) {
+  if (piece.circle) {
+    b2CircleShape shape;
+    shape.m_p = to_b2(piece.circle_center);
+    shape.m_radius = static_cast<float>(piece.circle_radius_m);
+    body->CreateFixture(&shape, 0.0f);
+    return 1;
+  }
+  if (piece.convex && static_cast<int>(piece.outline.size()) <= b2_maxPolygonVertices) {
+    return add_convex(body, piece.outline);
+  }
+  int n = 0;
+  for (const mapper::Polyline& tri : geom::triangulate(piece.outline)) n += add_convex(body, tri);
+  return n;
+}
+
+}  // namespace
+
+PhysicsWorld::PhysicsWorld(const WorldSpec& world, const PhysicsOptions& options)
+    : options_(options), world_(std::make_unique<b2World>(b2Vec2(0.0f, 0.0f))) {
+  b2BodyDef ground_def;  // static by default
+  b2Body* ground = world_->CreateBody(&ground_def);
+  for (const SolidPiece& piece : solid_pieces(world)) static_fixtures_ += add_piece(ground, piece);
+
+  b2BodyDef body_def;
+  body_def.type = b2_dynamicBody;
+  body_def.position = to_b2(world.start.translation());
+  body_def.angle = static_cast<float>(world.start.theta_rad);
+  body_def.allowSleep = false;  // velocity is set every step; a sleeping body would ignore it
+  body_ = world_->CreateBody(&body_def);
+  b2PolygonShape box;
+  box.SetAsBox(static_cast<float>(0.5 * options.body_length_m),
+               static_cast<float>(0.5 * options.body_width_m));
+  b2FixtureDef fixture;
+  fixture.shape = &box;
+  fixture.density =
+      static_cast<float>(options.body_mass_kg / (options.body_length_m * options.body_width_m));
+  fixture.friction = static_cast<float>(options.friction);
+  body_->CreateFixture(&fixture);
+  pose_ = world.start;
+}
+
+PhysicsWorld::~PhysicsWorld() = default;
+
+const mapper::Pose2& PhysicsWorld::step(const BodyTwist& twist, double dt_s) {
+  const double ds_m = twist.v_mps * dt_s;
+  const double dtheta_rad = twist.w_radps * dt_s;
+  const mapper::Pose2 free_pose = advance_pose(pose_, ds_m, dtheta_rad);
+  // Box2D integrates a straight chord; aiming it at the arc's mid heading makes its free
+  // motion agree with the arc to second order, so contact and truth hand over smoothly.
+  const double chord_heading = pose_.theta_rad + 0.5 * dtheta_rad;
+  body_->SetTransform(to_b2(pose_.translation()), static_cast<float>(pose_.theta_rad));
+  body_->SetLinearVelocity({static_cast<float>(twist.v_mps * std::cos(chord_heading)),
+                            static_cast<float>(twist.v_mps * std::sin(chord_heading))});
+  body_->SetAngularVelocity(static_cast<float>(twist.w_radps));
+  world_->Step(static_cast<float>(dt_s), options_.velocity_iterations,
+               options_.position_iterations);
+
+  in_contact_ = false;
+  for (b2ContactEdge* edge = body_->GetContactList(); edge != nullptr; edge = edge->next) {
+    if (edge->contact->IsTouching()) {
+      in_contact_ = true;
+      break;
+    }
+  }
+  if (in_contact_) {
+    const b2Vec2 p = body_->GetPosition();
+    pose_ = {p.x, p.y, mapper::wrap_angle_rad(body_->GetAngle())};
+  } else {
+    pose_ = free_pose;
+  }
+  return pose_;
+}
+
+}  // namespace cogmap::sim

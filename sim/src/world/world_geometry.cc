@@ -1,0 +1,224 @@
+// Thick walls become mitred quads; every quad and obstacle outline contributes its edges as
+// candidate surfaces, and the parts of a candidate buried inside another piece are cut away.
+#include "cogmap/sim/world_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "world/polygon_ops.h"
+
+namespace cogmap::sim {
+
+using mapper::Point2;
+using mapper::Polyline;
+using mapper::Segment;
+
+namespace {
+
+// Joints sharper than this turn (radians) are not mitred: the mitre would spike far out.
+constexpr double kMaxMitreTurnRad = 150.0 * 3.14159265358979323846 / 180.0;
+// Endpoints closer than this are the same vertex when surfaces are chained, metres.
+constexpr double kJoinEpsM = 1e-6;
+// A chained vertex is a convex corner when the surfaces turn right by more than this (sine).
+constexpr double kCornerMinSine = 1e-3;
+// Candidate pieces shorter than this after clipping are numerical dust, metres.
+constexpr double kMinSurfaceM = 1e-6;
+
+Point2 left_normal(const Point2& d) { return {-d.y(), d.x()}; }
+
+struct Candidate {
+  Segment segment;
+  std::size_t owner;  // index of the piece it bounds: never clipped against itself
+};
+
+struct Box {
+  Point2 lo, hi;
+  bool overlaps(const Box& o) const {
+    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y();
+  }
+};
+
+Box bounds_of(const Polyline& pts) {
+  Box b{pts.front(), pts.front()};
+  for (const Point2& p : pts) {
+    b.lo = b.lo.cwiseMin(p);
+    b.hi = b.hi.cwiseMax(p);
+  }
+  return b;
+}
+
+// Mitre offset at a joint between unit directions d0 then d1, or nullopt when not mitred.
+std::optional<Point2> mitre_offset(const Point2& d0, const Point2& d1, double half_m) {
+  const double turn = std::atan2(geom::cross(d0, d1), d0.dot(d1));
+  if (std::abs(turn) > kMaxMitreTurnRad) return std::nullopt;
+  const Point2 n0 = left_normal(d0), n1 = left_normal(d1);
+  return half_m * (n0 + n1) / (1.0 + n0.dot(n1));
+}
+
+// Adds one wall's quads to `pieces` and their exposed edges to `candidates`.
+void add_wall(const WallPolyline& wall, std::vector<SolidPiece>& pieces,
+              std::vector<Candidate>& candidates) {
+  const double h = 0.5 * wall.thickness_m;
+  const bool closed = wall.closed();
+  const std::size_t n_seg = wall.points.size() - 1;
+  std::vector<Point2> dir(n_seg);
+  for (std::size_t k = 0; k < n_seg; ++k) {
+    dir[k] = (wall.points[k + 1] - wall.points[k]).normalized();
+  }
+  // Offset of the left face at the start and end of every segment; the right face mirrors it.
+  std::vector<Point2> start_off(n_seg), end_off(n_seg);
+  std::vector<bool> start_cap(n_seg, true), end_cap(n_seg, true);
+  for (std::size_t k = 0; k < n_seg; ++k) {
+    start_off[k] = h * left_normal(dir[k]);
+    end_off[k] = start_off[k];
+  }
+  for (std::size_t k = 0; k < n_seg; ++k) {
+    const bool has_next = k + 1 < n_seg || closed;
+    if (!has_next) continue;
+    const std::size_t next = (k + 1) % n_seg;
+    if (const auto off = mitre_offset(dir[k], dir[next], h)) {
+      end_off[k] = *off;
+      start_off[next] = *off;
+      end_cap[k] = false;
+      start_cap[next] = false;
+    }
+  }
+  for (std::size_t k = 0; k < n_seg; ++k) {
+    const Point2& a = wall.points[k];
+    const Point2& b = wall.points[k + 1];
+    const Point2 ls = a + start_off[k], le = b + end_off[k];
+    const Point2 re = b - end_off[k], rs = a - start_off[k];
+    const std::size_t owner = pieces.size();
+    SolidPiece piece;
+    piece.outline = {ls, le, re, rs};  // clockwise: the solid is right of each edge
+    pieces.push_back(piece);
+    candidates.push_back({{ls, le}, owner});
+    candidates.push_back({{re, rs}, owner});
+    if (end_cap[k]) candidates.push_back({{le, re}, owner});
+    if (start_cap[k]) candidates.push_back({{rs, ls}, owner});
+  }
+}
+
+void add_obstacle(const Obstacle& obstacle, std::vector<SolidPiece>& pieces,
+                  std::vector<Candidate>& candidates) {
+  SolidPiece piece;
+  piece.outline = obstacle_outline(obstacle, kCircleSides);
+  if (geom::signed_area(piece.outline) > 0.0) {
+    std::reverse(piece.outline.begin(), piece.outline.end());
+  }
+  if (const auto* c = std::get_if<CircleObstacle>(&obstacle.shape)) {
+    piece.circle = true;
+    piece.circle_center = c->center;
+    piece.circle_radius_m = c->radius_m;
+  }
+  if (std::holds_alternative<PolygonObstacle>(obstacle.shape)) {
+    const Polyline& o = piece.outline;
+    for (std::size_t i = 0; i < o.size() && piece.convex; ++i) {
+      const Point2& p0 = o[i];
+      const Point2& p1 = o[(i + 1) % o.size()];
+      const Point2& p2 = o[(i + 2) % o.size()];
+      piece.convex = geom::cross(p1 - p0, p2 - p1) <= 0.0;  // clockwise: right turns only
+    }
+  }
+  const std::size_t owner = pieces.size();
+  for (std::size_t i = 0; i < piece.outline.size(); ++i) {
+    candidates.push_back(
+        {{piece.outline[i], piece.outline[(i + 1) % piece.outline.size()]}, owner});
+  }
+  pieces.push_back(std::move(piece));
+}
+
+void build(const WorldSpec& world, std::vector<SolidPiece>& pieces,
+           std::vector<Candidate>& candidates) {
+  for (const WallPolyline& wall : world.walls) add_wall(wall, pieces, candidates);
+  for (const Obstacle& obstacle : world.obstacles) add_obstacle(obstacle, pieces, candidates);
+}
+
+// True when p is inside the piece and not on its boundary.
+bool strictly_inside(const Point2& p, const Polyline& outline) {
+  return geom::point_in_polygon(p, outline) && geom::distance_to_boundary_m(p, outline) > 1e-9;
+}
+
+// The parts of a candidate outside every other piece, in order along the candidate.
+void clip(const Candidate& c, const std::vector<SolidPiece>& pieces, const std::vector<Box>& boxes,
+          std::vector<Segment>& out) {
+  const Box own{c.segment.a.cwiseMin(c.segment.b), c.segment.a.cwiseMax(c.segment.b)};
+  std::vector<std::size_t> near;
+  std::vector<double> cuts{0.0, 1.0};
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (i == c.owner || !boxes[i].overlaps(own)) continue;
+    near.push_back(i);
+    const auto t = geom::crossings(c.segment.a, c.segment.b, pieces[i].outline);
+    cuts.insert(cuts.end(), t.begin(), t.end());
+  }
+  std::sort(cuts.begin(), cuts.end());
+  const Point2 d = c.segment.b - c.segment.a;
+  double open = -1.0;  // start parameter of the kept run being built; negative: none open
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double t0 = cuts[k], t1 = cuts[k + 1];
+    if (t1 - t0 <= 0.0) continue;
+    const Point2 mid = c.segment.a + 0.5 * (t0 + t1) * d;
+    const bool buried = std::any_of(near.begin(), near.end(), [&](std::size_t i) {
+      return strictly_inside(mid, pieces[i].outline);
+    });
+    if (!buried && open < 0.0) open = t0;
+    if (buried && open >= 0.0) {
+      out.push_back({c.segment.a + open * d, c.segment.a + t0 * d});
+      open = -1.0;
+    }
+  }
+  if (open >= 0.0) out.push_back({c.segment.a + open * d, c.segment.b});
+}
+
+std::vector<Point2> convex_corners(const std::vector<Segment>& surfaces) {
+  std::vector<Point2> corners;
+  for (const Segment& s : surfaces) {
+    const Point2 d0 = (s.b - s.a).normalized();
+    for (const Segment& t : surfaces) {
+      if ((t.a - s.b).norm() > kJoinEpsM) continue;
+      const Point2 d1 = (t.b - t.a).normalized();
+      if (geom::cross(d0, d1) < -kCornerMinSine) {
+        const bool seen = std::any_of(corners.begin(), corners.end(), [&](const Point2& q) {
+          return (q - s.b).norm() <= kJoinEpsM;
+        });
+        if (!seen) corners.push_back(s.b);
+      }
+    }
+  }
+  return corners;
+}
+
+}  // namespace
+
+std::vector<SolidPiece> solid_pieces(const WorldSpec& world) {
+  std::vector<SolidPiece> pieces;
+  std::vector<Candidate> unused;
+  build(world, pieces, unused);
+  return pieces;
+}
+
+WorldSurfaces world_surfaces(const WorldSpec& world) {
+  std::vector<SolidPiece> pieces;
+  std::vector<Candidate> candidates;
+  build(world, pieces, candidates);
+  std::vector<Box> boxes;
+  boxes.reserve(pieces.size());
+  for (const SolidPiece& p : pieces) boxes.push_back(bounds_of(p.outline));
+  WorldSurfaces out;
+  for (const Candidate& c : candidates) clip(c, pieces, boxes, out.surfaces);
+  std::erase_if(out.surfaces, [](const Segment& s) { return s.length_m() < kMinSurfaceM; });
+  out.corners = convex_corners(out.surfaces);
+  return out;
+}
+
+SonarScene surface_segments(const WorldSpec& world) {
+  WorldSurfaces s = world_surfaces(world);
+  return {std::move(s.surfaces), std::move(s.corners)};
+}
+
+std::vector<Segment> true_surfaces(const WorldSpec& world) {
+  return world_surfaces(world).surfaces;
+}
+
+}  // namespace cogmap::sim

@@ -1,0 +1,247 @@
+// Parses worlds/*.yaml strictly (docs/formats.md "World"): every key known, every number
+// finite, every shape non-degenerate, the start pose clear of everything.
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "cogmap/sim/world_spec.h"
+#include "world/polygon_ops.h"
+
+namespace cogmap::sim {
+
+using mapper::Point2;
+using mapper::Polyline;
+
+namespace {
+
+// Two points closer than this are the same point, metres (a tenth of a millimetre).
+constexpr double kSamePointM = 1e-4;
+// Polygons with less area than this are degenerate, m² (1 cm²).
+constexpr double kMinPolygonAreaM2 = 1e-4;
+
+SourceRef source_of(const yaml::Node& node) { return {node.line(), node.key_path()}; }
+
+Point2 parse_point(const yaml::Node& node) {
+  if (!node.is_sequence() || node.size() != 2) node.fail("expected a point [x, y] in metres");
+  return {node.at(0).as<double>(), node.at(1).as<double>()};
+}
+
+double parse_thickness(const yaml::Node& node) {
+  const double t = node.as<double>();
+  if (t <= 0.0) node.fail("wall thickness must be positive");
+  return t;
+}
+
+WallPolyline parse_polyline(const yaml::Node& node, double default_thickness_m) {
+  WallPolyline wall;
+  wall.thickness_m = default_thickness_m;
+  wall.source = source_of(node);
+  if (node.is_map()) {
+    node.expect_keys({"points", "thickness_m"});
+    if (const auto t = node.child("thickness_m")) wall.thickness_m = parse_thickness(*t);
+  } else if (!node.is_sequence()) {
+    node.fail("expected a list of [x, y] points or {points: ..., thickness_m: ...}");
+  }
+  // Never assign one yaml::Node to another: yaml-cpp's operator= rewrites the document.
+  const yaml::Node points = node.is_map() ? node["points"] : node;
+  points.expect_sequence();
+  if (points.size() < 2) points.fail("a wall polyline needs at least 2 points");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const yaml::Node p = points.at(i);
+    wall.points.push_back(parse_point(p));
+    if (i > 0 && (wall.points[i] - wall.points[i - 1]).norm() < kSamePointM) {
+      p.fail("zero-length wall segment (the point repeats the previous one)");
+    }
+  }
+  return wall;
+}
+
+void parse_walls(const yaml::Node& node, WorldSpec& world) {
+  node.expect_keys({"thickness_m", "polylines"});
+  double thickness_m = kDefaultWallThicknessM;
+  if (const auto t = node.child("thickness_m")) thickness_m = parse_thickness(*t);
+  const yaml::Node lines = node["polylines"];
+  lines.expect_sequence();
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    world.walls.push_back(parse_polyline(lines.at(i), thickness_m));
+  }
+}
+
+BoxObstacle parse_box(const yaml::Node& node) {
+  node.expect_keys({"center", "size", "angle_deg"});
+  BoxObstacle box;
+  box.center = parse_point(node["center"]);
+  const yaml::Node size = node["size"];
+  const Point2 s = parse_point(size);
+  if (s.x() <= 0.0 || s.y() <= 0.0) size.fail("box size must be positive in both directions");
+  box.length_m = s.x();
+  box.width_m = s.y();
+  box.angle_rad = node.get_or<double>("angle_deg", 0.0) * std::numbers::pi / 180.0;
+  return box;
+}
+
+CircleObstacle parse_circle(const yaml::Node& node) {
+  node.expect_keys({"center", "radius_m"});
+  CircleObstacle circle;
+  circle.center = parse_point(node["center"]);
+  const yaml::Node r = node["radius_m"];
+  circle.radius_m = r.as<double>();
+  if (circle.radius_m <= 0.0) r.fail("circle radius must be positive");
+  return circle;
+}
+
+PolygonObstacle parse_polygon(const yaml::Node& node) {
+  node.expect_sequence();
+  PolygonObstacle polygon;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const yaml::Node p = node.at(i);
+    const Point2 q = parse_point(p);
+    const bool closes = i + 1 == node.size() && !polygon.points.empty() &&
+                        (q - polygon.points.front()).norm() < kSamePointM;
+    if (closes) break;  // a repeated first vertex just closes the ring
+    if (!polygon.points.empty() && (q - polygon.points.back()).norm() < kSamePointM) {
+      p.fail("zero-length polygon edge (the vertex repeats the previous one)");
+    }
+    polygon.points.push_back(q);
+  }
+  if (polygon.points.size() < 3) node.fail("a polygon needs at least 3 distinct vertices");
+  if (std::abs(geom::signed_area(polygon.points)) < kMinPolygonAreaM2) {
+    node.fail("polygon has zero area");
+  }
+  if (!geom::is_simple_polygon(polygon.points)) node.fail("polygon is self-intersecting");
+  return polygon;
+}
+
+Obstacle parse_obstacle(const yaml::Node& node) {
+  node.expect_keys({"box", "circle", "polygon"});
+  if (node.size() != 1) node.fail("an obstacle has exactly one of box, circle, polygon");
+  Obstacle obstacle;
+  obstacle.source = source_of(node);
+  if (const auto b = node.child("box")) {
+    obstacle.shape = parse_box(*b);
+  } else if (const auto c = node.child("circle")) {
+    obstacle.shape = parse_circle(*c);
+  } else {
+    obstacle.shape = parse_polygon(node["polygon"]);
+  }
+  return obstacle;
+}
+
+std::string format_xy(const Point2& p) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(2);
+  out << '(' << p.x() << ", " << p.y() << ')';
+  return out.str();
+}
+
+// Distance from p to the surface of an obstacle: negative inside.
+double signed_obstacle_distance_m(const Point2& p, const Obstacle& obstacle) {
+  if (const auto* c = std::get_if<CircleObstacle>(&obstacle.shape)) {
+    return (p - c->center).norm() - c->radius_m;
+  }
+  const Polyline outline = obstacle_outline(obstacle);
+  const double d = geom::distance_to_boundary_m(p, outline);
+  return geom::point_in_polygon(p, outline) ? -d : d;
+}
+
+void check_start(const WorldSpec& world, const WorldCheckOptions& options) {
+  const Point2 p = world.start.translation();
+  auto complain = [&](double d, const std::string& what, const SourceRef& ref) {
+    std::ostringstream msg;
+    msg.setf(std::ios::fixed);
+    msg.precision(3);
+    if (d < 0.0) {
+      msg << "start " << format_xy(p) << " is inside " << what << " " << ref.key << " (line "
+          << ref.line << ")";
+    } else {
+      msg << "start " << format_xy(p) << " is only " << d << " m from " << what << " " << ref.key
+          << " (line " << ref.line << "); the robot needs " << options.start_clearance_m << " m";
+    }
+    throw yaml::ConfigError(world.file.string(), world.start_source.line, "start", msg.str());
+  };
+  for (const WallPolyline& wall : world.walls) {
+    for (std::size_t i = 0; i + 1 < wall.points.size(); ++i) {
+      const double d = mapper::distance_to_segment_m(p, {wall.points[i], wall.points[i + 1]}) -
+                       0.5 * wall.thickness_m;
+      if (d < options.start_clearance_m) complain(d, "wall", wall.source);
+    }
+  }
+  for (const Obstacle& obstacle : world.obstacles) {
+    const double d = signed_obstacle_distance_m(p, obstacle);
+    if (d < options.start_clearance_m) complain(d, "obstacle", obstacle.source);
+  }
+}
+
+}  // namespace
+
+WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options) {
+  root.expect_keys({"name", "description", "walls", "obstacles", "start"});
+  WorldSpec world;
+  world.file = root.file();
+  world.name = root.get<std::string>("name");
+  if (world.name.empty()) root["name"].fail("the world needs a non-empty name");
+  world.description = root.get_or<std::string>("description", "");
+  parse_walls(root["walls"], world);
+  if (const auto obstacles = root.child("obstacles")) {
+    obstacles->expect_sequence();
+    for (std::size_t i = 0; i < obstacles->size(); ++i) {
+      world.obstacles.push_back(parse_obstacle(obstacles->at(i)));
+    }
+  }
+  const yaml::Node start = root["start"];
+  start.expect_keys({"x_m", "y_m", "theta_deg"});
+  world.start = {
+      start.get<double>("x_m"), start.get<double>("y_m"),
+      mapper::wrap_angle_rad(start.get_or<double>("theta_deg", 0.0) * std::numbers::pi / 180.0)};
+  world.start_source = source_of(start);
+  check_start(world, options);
+  return world;
+}
+
+WorldSpec load_world(const std::filesystem::path& path, const WorldCheckOptions& options) {
+  return parse_world(yaml::Node::load_file(path), options);
+}
+
+bool WallPolyline::closed() const {
+  return points.size() > 2 && (points.front() - points.back()).norm() < kSamePointM;
+}
+
+Polyline obstacle_outline(const Obstacle& obstacle, int circle_sides) {
+  Polyline out;
+  if (const auto* b = std::get_if<BoxObstacle>(&obstacle.shape)) {
+    const double c = std::cos(b->angle_rad), s = std::sin(b->angle_rad);
+    const double hx = 0.5 * b->length_m, hy = 0.5 * b->width_m;
+    for (const auto& [u, v] : {std::pair{hx, hy}, {-hx, hy}, {-hx, -hy}, {hx, -hy}}) {
+      out.push_back(b->center + Point2{c * u - s * v, s * u + c * v});
+    }
+  } else if (const auto* ci = std::get_if<CircleObstacle>(&obstacle.shape)) {
+    for (int k = 0; k < circle_sides; ++k) {
+      const double a = 2.0 * std::numbers::pi * k / circle_sides;
+      out.push_back(ci->center + ci->radius_m * Point2{std::cos(a), std::sin(a)});
+    }
+  } else {
+    out = std::get<PolygonObstacle>(obstacle.shape).points;
+  }
+  return out;
+}
+
+std::pair<Point2, Point2> world_bounds(const WorldSpec& world) {
+  Point2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  Point2 hi = -lo;
+  auto grow = [&](const Point2& p, double margin) {
+    lo = lo.cwiseMin(p - Point2{margin, margin});
+    hi = hi.cwiseMax(p + Point2{margin, margin});
+  };
+  for (const WallPolyline& wall : world.walls) {
+    for (const Point2& p : wall.points) grow(p, 0.5 * wall.thickness_m);
+  }
+  for (const Obstacle& obstacle : world.obstacles) {
+    for (const Point2& p : obstacle_outline(obstacle)) grow(p, 0.0);
+  }
+  if (world.walls.empty() && world.obstacles.empty()) grow(world.start.translation(), 0.0);
+  return {lo, hi};
+}
+
+}  // namespace cogmap::sim

@@ -1,0 +1,207 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "cogmap/sim/world_spec.h"
+
+namespace cogmap::sim {
+namespace {
+
+WorldSpec parse(const std::string& text) {
+  return parse_world(yaml::Node::load_string(text, "w.yaml"));
+}
+
+// Parses `text`, expects a ConfigError, returns it for inspection.
+yaml::ConfigError error_of(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const yaml::ConfigError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return yaml::ConfigError("", 0, "", "");
+}
+
+const std::string kHeader =
+    "name: t\n"                                            // line 1
+    "walls:\n"                                             // line 2
+    "  polylines:\n"                                       // line 3
+    "    - [[0, 0], [10, 0], [10, 6], [0, 6], [0, 0]]\n";  // line 4
+
+TEST(WorldLoader, ParsesEveryElement) {
+  const WorldSpec w = parse(
+      "name: two\n"
+      "description: d\n"
+      "walls:\n"
+      "  thickness_m: 0.2\n"
+      "  polylines:\n"
+      "    - [[0, 0], [10, 0], [10, 6], [0, 6], [0, 0]]\n"
+      "    - {points: [[7, 6], [7, 4]], thickness_m: 0.05}\n"
+      "obstacles:\n"
+      "  - {box: {center: [2.0, 4.5], size: [1.2, 0.6], angle_deg: 90}}\n"
+      "  - {circle: {center: [8.0, 1.5], radius_m: 0.25}}\n"
+      "  - {polygon: [[3, 1], [3.5, 1], [3.2, 1.6]]}\n"
+      "start: {x_m: 1.0, y_m: 1.0, theta_deg: 90}\n");
+  EXPECT_EQ(w.name, "two");
+  EXPECT_EQ(w.description, "d");
+  ASSERT_EQ(w.walls.size(), 2u);
+  EXPECT_DOUBLE_EQ(w.walls[0].thickness_m, 0.2);
+  EXPECT_TRUE(w.walls[0].closed());
+  EXPECT_DOUBLE_EQ(w.walls[1].thickness_m, 0.05);
+  EXPECT_FALSE(w.walls[1].closed());
+  EXPECT_EQ(w.walls[1].source.line, 7);
+  ASSERT_EQ(w.obstacles.size(), 3u);
+  const auto& box = std::get<BoxObstacle>(w.obstacles[0].shape);
+  EXPECT_DOUBLE_EQ(box.length_m, 1.2);
+  EXPECT_DOUBLE_EQ(box.angle_rad, std::numbers::pi / 2);
+  EXPECT_DOUBLE_EQ(std::get<CircleObstacle>(w.obstacles[1].shape).radius_m, 0.25);
+  EXPECT_EQ(std::get<PolygonObstacle>(w.obstacles[2].shape).points.size(), 3u);
+  EXPECT_EQ(w.obstacles[2].source.key, "obstacles[2]");
+  EXPECT_DOUBLE_EQ(w.start.x_m, 1.0);
+  EXPECT_DOUBLE_EQ(w.start.theta_rad, std::numbers::pi / 2);
+  EXPECT_DOUBLE_EQ(w.walls[0].thickness_m, 0.2);
+}
+
+TEST(WorldLoader, DefaultThicknessApplies) {
+  const WorldSpec w = parse(kHeader + "start: {x_m: 1, y_m: 1}\n");
+  EXPECT_DOUBLE_EQ(w.walls[0].thickness_m, kDefaultWallThicknessM);
+  EXPECT_DOUBLE_EQ(w.start.theta_rad, 0.0);
+}
+
+TEST(WorldLoader, UnknownKeyNamesFileLineAndKey) {
+  const auto e = error_of(kHeader + "start: {x_m: 1, y_m: 1, theta: 0}\n");
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_EQ(e.key(), "start.theta");
+  EXPECT_NE(std::string(e.what()).find("w.yaml:5: start.theta: unknown key"), std::string::npos)
+      << e.what();
+  const auto top = error_of(kHeader + "strat: {x_m: 1, y_m: 1}\n");
+  EXPECT_EQ(top.key(), "strat");
+  EXPECT_EQ(top.line(), 5);
+}
+
+TEST(WorldLoader, WrongTypeNamesKey) {
+  const auto e = error_of(kHeader + "start: {x_m: one, y_m: 1}\n");
+  EXPECT_EQ(e.key(), "start.x_m");
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_NE(std::string(e.what()).find("expected a finite number"), std::string::npos);
+  const auto p =
+      error_of("name: t\nwalls:\n  polylines:\n    - [[0, 0], [1]]\nstart: {x_m: 5, y_m: 5}\n");
+  EXPECT_EQ(p.key(), "walls.polylines[0][1]");
+  EXPECT_EQ(p.line(), 4);
+  EXPECT_NE(std::string(p.what()).find("expected a point [x, y]"), std::string::npos);
+}
+
+TEST(WorldLoader, MissingKeyIsAnError) {
+  const auto e = error_of(kHeader);
+  EXPECT_NE(std::string(e.what()).find("missing required key 'start'"), std::string::npos);
+}
+
+TEST(WorldLoader, DegenerateWallsAreErrors) {
+  const auto one =
+      error_of("name: t\nwalls:\n  polylines:\n    - [[0, 0]]\nstart: {x_m: 5, y_m: 5}\n");
+  EXPECT_EQ(one.key(), "walls.polylines[0]");
+  EXPECT_EQ(one.line(), 4);
+  EXPECT_NE(std::string(one.what()).find("at least 2 points"), std::string::npos);
+
+  const auto zero = error_of(
+      "name: t\nwalls:\n  polylines:\n    - [[0, 0], [1, 0],\n       [1, 0]]\n"
+      "start: {x_m: 5, y_m: 5}\n");
+  EXPECT_EQ(zero.key(), "walls.polylines[0][2]");
+  EXPECT_EQ(zero.line(), 5);
+  EXPECT_NE(std::string(zero.what()).find("zero-length wall segment"), std::string::npos);
+
+  const auto thin =
+      error_of("name: t\nwalls:\n  thickness_m: 0\n  polylines: []\nstart: {x_m: 5, y_m: 5}\n");
+  EXPECT_EQ(thin.key(), "walls.thickness_m");
+  EXPECT_EQ(thin.line(), 3);
+}
+
+TEST(WorldLoader, DegenerateObstaclesAreErrors) {
+  const std::string head = kHeader + "obstacles:\n";  // obstacles start on line 6
+  const std::string start = "start: {x_m: 1, y_m: 1}\n";
+  const auto box = error_of(head + "  - {box: {center: [5, 3], size: [1, -0.5]}}\n" + start);
+  EXPECT_EQ(box.key(), "obstacles[0].box.size");
+  EXPECT_EQ(box.line(), 6);
+  EXPECT_NE(std::string(box.what()).find("box size must be positive"), std::string::npos);
+
+  const auto circle = error_of(head + "  - {circle: {center: [5, 3], radius_m: 0}}\n" + start);
+  EXPECT_EQ(circle.key(), "obstacles[0].circle.radius_m");
+  EXPECT_NE(std::string(circle.what()).find("radius must be positive"), std::string::npos);
+
+  const auto two = error_of(head + "  - {polygon: [[5, 3], [6, 3]]}\n" + start);
+  EXPECT_EQ(two.key(), "obstacles[0].polygon");
+  EXPECT_NE(std::string(two.what()).find("at least 3"), std::string::npos);
+
+  const auto flat = error_of(head + "  - {polygon: [[5, 3], [6, 3], [7, 3]]}\n" + start);
+  EXPECT_NE(std::string(flat.what()).find("zero area"), std::string::npos);
+
+  // A lopsided bow tie (non-zero area): edges (5,3)-(7,4) and (7,3)-(5,5) cross.
+  const auto bow = error_of(head + "  - {polygon: [[5, 3], [7, 4], [7, 3], [5, 5]]}\n" + start);
+  EXPECT_EQ(bow.line(), 6);
+  EXPECT_NE(std::string(bow.what()).find("self-intersecting"), std::string::npos);
+
+  const auto both = error_of(head +
+                             "  - {box: {center: [5, 3], size: [1, 1]}, circle: {center: [5, 3], "
+                             "radius_m: 1}}\n" +
+                             start);
+  EXPECT_NE(std::string(both.what()).find("exactly one of"), std::string::npos);
+}
+
+TEST(WorldLoader, StartInsideObstacleIsAnError) {
+  const auto e = error_of(kHeader +
+                          "obstacles:\n"
+                          "  - {box: {center: [2, 2], size: [2, 2]}}\n"  // line 6
+                          "start: {x_m: 2.0, y_m: 2.5}\n");              // line 7
+  EXPECT_EQ(e.line(), 7);
+  EXPECT_EQ(e.key(), "start");
+  EXPECT_NE(std::string(e.what()).find("w.yaml:7: start: start (2.00, 2.50) is inside obstacle "
+                                       "obstacles[0] (line 6)"),
+            std::string::npos)
+      << e.what();
+}
+
+TEST(WorldLoader, StartTooCloseToWallIsAnError) {
+  // The wall's inner face is at y = 0.06; 0.2 m from it is less than half the robot's width.
+  const auto e = error_of(kHeader + "start: {x_m: 5, y_m: 0.26}\n");
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_NE(std::string(e.what()).find("is only 0.200 m from wall walls.polylines[0] (line 4)"),
+            std::string::npos)
+      << e.what();
+  EXPECT_NO_THROW(parse(kHeader + "start: {x_m: 5, y_m: 0.32}\n"));
+  const auto inside = error_of(kHeader + "start: {x_m: 5, y_m: 0.0}\n");
+  EXPECT_NE(std::string(inside.what()).find("is inside wall"), std::string::npos);
+}
+
+TEST(WorldLoader, StartNearCircleUsesTrueRadius) {
+  const std::string w = kHeader + "obstacles:\n  - {circle: {center: [5, 3], radius_m: 0.5}}\n";
+  EXPECT_THROW(parse(w + "start: {x_m: 5.7, y_m: 3}\n"), yaml::ConfigError);
+  EXPECT_NO_THROW(parse(w + "start: {x_m: 5.8, y_m: 3}\n"));
+}
+
+TEST(WorldLoader, LoadFileNamesThePath) {
+  try {
+    load_world("/nonexistent/world.yaml");
+    FAIL();
+  } catch (const yaml::ConfigError& e) {
+    EXPECT_EQ(e.file(), "/nonexistent/world.yaml");
+  }
+}
+
+TEST(WorldLoader, ObstacleOutlines) {
+  Obstacle box{BoxObstacle{{1.0, 2.0}, 2.0, 1.0, 0.0}, {}};
+  const mapper::Polyline o = obstacle_outline(box);
+  ASSERT_EQ(o.size(), 4u);
+  EXPECT_DOUBLE_EQ(o[0].x(), 2.0);
+  EXPECT_DOUBLE_EQ(o[0].y(), 2.5);
+  EXPECT_DOUBLE_EQ(o[2].x(), 0.0);
+  EXPECT_DOUBLE_EQ(o[2].y(), 1.5);
+  Obstacle circle{CircleObstacle{{0.0, 0.0}, 1.0}, {}};
+  const mapper::Polyline c = obstacle_outline(circle, 48);
+  ASSERT_EQ(c.size(), 48u);
+  for (const auto& p : c) EXPECT_NEAR(p.norm(), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace cogmap::sim
