@@ -19,8 +19,17 @@ using testing::single_forward_sonar;
 constexpr Pose2 kRobot{0.05, 0.05, 0.0};
 constexpr CellIndex kRobotCell{60, 60};
 
+/// The increments of thesis Figs. A.2-A.3 (+1.5 on the cell, +1.5 on each of the 3x3), which
+/// the exact values below follow; the defaults (§2.2.3) are checked separately.
+GridOptions fig_a2_options() {
+  GridOptions options;
+  options.hit_increment = 1.5;
+  options.neighbour_increment = 1.5;
+  return options;
+}
+
 std::unique_ptr<GridUpdater> make(GridKind kind, const RobotGeometry& robot,
-                                  const GridOptions& options = {}) {
+                                  const GridOptions& options = fig_a2_options()) {
   auto u = make_grid_updater(kind, options, robot);
   u->reset({0.0, 0.0});
   return u;
@@ -67,6 +76,15 @@ TEST(Mhimm, OneReadingOfSonar3) {
   }
   EXPECT_EQ(cells_differing(u->histogram(), HistogramGrid(u->geometry(), 0.0f)),
             9u + kSonar3Line.size() - 1);
+}
+
+TEST(Mhimm, DefaultIncrementsFollowSection223) {
+  auto u = make(GridKind::kMhimm, p2at_geometry(), GridOptions{});
+  ASSERT_TRUE(u->integrate(kRobot, echo(3, 1.0)));
+  EXPECT_FLOAT_EQ(u->histogram_at(kSonar3Hit), 3.0f);  // 2.5 + 0.5
+  EXPECT_FLOAT_EQ(u->histogram_at({73, 63}), 0.5f);    // neighbour off the beam
+  EXPECT_FLOAT_EQ(u->histogram_at({71, 62}), -0.5f);   // neighbour on the beam: 0.5 - 1
+  EXPECT_FLOAT_EQ(u->histogram_at({66, 61}), -1.0f);   // plain beam cell
 }
 
 TEST(Himm, LineDecrementLowersEarlierHits) {

@@ -1,0 +1,226 @@
+#include "cogmap/mapper/mapper.h"
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+
+#include "facade/room_recorder.h"
+
+namespace cogmap::mapper {
+namespace {
+
+/// Rooms kept in RAM as localisation reference: the previous room and the one before it.
+constexpr std::size_t kResidentRooms = 2;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Linear interpolation of two poses (heading along the shorter arc).
+Pose2 interpolate(const Pose2& a, const Pose2& b, double t) {
+  return {a.x_m + t * (b.x_m - a.x_m), a.y_m + t * (b.y_m - a.y_m),
+          wrap_angle_rad(a.theta_rad + t * wrap_angle_rad(b.theta_rad - a.theta_rad))};
+}
+
+RejectedReadings operator+(const RejectedReadings& a, const RejectedReadings& b) {
+  return {a.not_finite + b.not_finite, a.non_positive + b.non_positive, a.beyond_max + b.beyond_max,
+          a.unknown_sonar + b.unknown_sonar};
+}
+
+}  // namespace
+
+struct Mapper::Impl {
+  MapperOptions options;
+  RobotGeometry robot;
+  AsrStore& store;
+  Pose2 start_pose;
+  Pose2 correction;  ///< world estimate = correction ∘ (start_pose ∘ odometry)
+  internal::RoomRecorder room;
+  std::unique_ptr<AsrBoundaryDetector> boundary;
+  Localizer localizer;
+  AsrGraph graph;
+  MapperStats stats;
+  RejectedReadings rejected_in_finished_rooms;
+  std::deque<Asr> resident;  ///< most recent finished rooms, newest last
+  RoomListener listener;
+  std::optional<Pose2> last_estimate;
+  double last_time_s = 0.0;
+  bool started = false;
+  int next_id = 0;
+
+  Impl(const MapperOptions& opts, const RobotGeometry& geometry, AsrStore& asr_store,
+       const Pose2& start)
+      : options(opts),
+        robot(geometry),
+        store(asr_store),
+        start_pose(start),
+        room(make_grid_updater(opts.grid, opts.grid_options, geometry),
+             opts.grid_options.cell_scale_mm / 2000.0),
+        boundary(opts.boundary == BoundaryKind::kDoorway
+                     ? make_doorway_detector(opts.doorway, geometry)
+                     : make_distance_detector(opts.distance)),
+        localizer(opts.localizer) {
+    options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
+  }
+
+  Pose2 odometry_world(const Pose2& odometry) const { return start_pose.compose(odometry); }
+  Pose2 estimate(const Pose2& odometry) const {
+    return correction.compose(odometry_world(odometry));
+  }
+
+  void integrate(const SensorFrame& frame, const Pose2& pose) {
+    const Pose2 previous = last_estimate.value_or(pose);
+    const double span_s = frame.time_s - last_time_s;
+    for (const SonarReading& reading : frame.sonar) {
+      // A transducer fired somewhere within the last cycle; place it on the interpolated pose.
+      double t = 1.0;
+      if (last_estimate && span_s > 0.0) {
+        t = std::clamp((reading.time_s - last_time_s) / span_s, 0.0, 1.0);
+      }
+      if (room.grid().integrate(interpolate(previous, pose, t), reading)) ++stats.readings_used;
+    }
+    stats.rejected = rejected_in_finished_rooms + room.grid().rejected();
+    stats.peak_grid_bytes = std::max(stats.peak_grid_bytes, room.grid().grid_bytes());
+  }
+
+  std::optional<int> finish_room(double time_s, const std::optional<BoundaryEvent>& leaving);
+  Localization localize(const Asr& asr) const;
+};
+
+Localization Mapper::Impl::localize(const Asr& asr) const {
+  std::vector<Polyline> reference;
+  for (const Asr& previous : resident) {
+    for (const Polyline& line : previous.walls) {
+      Polyline world;
+      for (const Point2& p : line) world.push_back(previous.pose.transform(p));
+      reference.push_back(std::move(world));
+    }
+  }
+  // The new room's local frame is the current estimate frame, so its walls are already in
+  // world-estimate coordinates.
+  return localizer.estimate(reference, asr.walls);
+}
+
+std::optional<int> Mapper::Impl::finish_room(double time_s,
+                                             const std::optional<BoundaryEvent>& leaving) {
+  const auto build_start = std::chrono::steady_clock::now();
+  const AsrTrace trace_in =
+      build_room_polylines(room.grid().histogram(), room.path(), options.builder);
+  stats.build_time_s += seconds_since(build_start);
+
+  Asr asr;
+  asr.id = room.id();
+  asr.walls = trace_in.fitted;
+  for (const Segment& s : trace_in.rejected) asr.walls.push_back({s.a, s.b});
+  asr.exits.push_back(room.entry());
+  if (leaving) {
+    asr.exits.push_back({leaving->exit_center, leaving->exit_width_m, leaving->heading_rad, {}});
+  }
+  asr.reference_point = room.entry().center;
+  asr.parent = room.parent();
+  asr.path = room.path();
+  asr.cell_scale_mm = room.grid().geometry().cell_scale_mm();
+  asr.grid_bytes = room.grid().grid_bytes();
+  for (const Polyline& line : trace_in.extracted) asr.extracted_vertex_count += line.size();
+  asr.start_time_s = room.start_time_s();
+  asr.end_time_s = time_s;
+  asr.odometry_pose = correction.inverse();  // local (estimate) -> odometry-only world
+
+  Pose2 room_correction;  // identity
+  if (options.localization == LocalizationKind::kEm && !resident.empty()) {
+    const auto em_start = std::chrono::steady_clock::now();
+    const Localization fix = localize(asr);
+    stats.localization_time_s += seconds_since(em_start);
+    if (fix.applied) {
+      room_correction = rotation_about(asr.reference_point, fix.rotation_rad);
+      asr.heading_correction_rad = fix.rotation_rad;
+    }
+  }
+  asr.pose = room_correction;
+  // Everything mapped from here on is corrected too: the robot's estimate turns with the room.
+  correction = room_correction.compose(correction);
+
+  store.save(asr);
+  graph.add_node({asr.id, asr.pose, asr.pose.transform(asr.reference_point)});
+  if (asr.parent) {
+    graph.add_edge({*asr.parent, asr.id, 1, asr.pose.transform(asr.reference_point)});
+  }
+  ++stats.rooms;
+  if (listener) {
+    AsrTrace trace = trace_in;
+    trace.asr_id = asr.id;
+    listener(asr, trace);
+  }
+  rejected_in_finished_rooms = rejected_in_finished_rooms + room.grid().rejected();
+  resident.push_back(std::move(asr));
+  if (resident.size() > kResidentRooms) resident.pop_front();
+  return resident.back().id;
+}
+
+Mapper::Mapper(const MapperOptions& options, const RobotGeometry& robot, AsrStore& store,
+               const Pose2& start_pose)
+    : impl_(std::make_unique<Impl>(options, robot, store, start_pose)) {}
+
+Mapper::~Mapper() = default;
+
+void Mapper::set_room_listener(RoomListener listener) { impl_->listener = std::move(listener); }
+
+std::optional<int> Mapper::process(const SensorFrame& frame) {
+  Impl& m = *impl_;
+  ++m.stats.frames;
+  Pose2 pose = m.estimate(frame.odometry);
+  if (!m.started) {
+    // Room 0 is entered at the known start pose.
+    m.room.start(m.next_id++, frame.time_s, pose, Exit{pose.translation(), 0.0, pose.theta_rad, {}},
+                 std::nullopt);
+    m.started = true;
+  }
+  m.room.visit(pose);
+  m.integrate(frame, pose);
+
+  std::optional<int> finished;
+  const std::optional<BoundaryEvent> event = m.boundary->update(frame, pose);
+  if (event && frame.time_s - m.room.start_time_s() >= m.options.min_room_duration_s) {
+    finished = m.finish_room(frame.time_s, event);
+    // The finished room's correction applies from now on: re-express pose and exit.
+    const Pose2 fix = m.resident.back().pose;
+    pose = m.estimate(frame.odometry);
+    const Exit entry{fix.transform(event->exit_center),
+                     event->exit_width_m,
+                     wrap_angle_rad(event->heading_rad + fix.theta_rad),
+                     {}};
+    m.room.start(m.next_id++, frame.time_s, pose, entry, finished);
+  }
+  m.last_estimate = pose;
+  m.last_time_s = frame.time_s;
+  return finished;
+}
+
+std::optional<int> Mapper::finish() {
+  Impl& m = *impl_;
+  if (!m.started) return std::nullopt;
+  m.started = false;
+  return m.finish_room(m.last_time_s, std::nullopt);
+}
+
+Pose2 Mapper::odometry_pose() const {
+  return impl_->correction.inverse().compose(impl_->last_estimate.value_or(impl_->start_pose));
+}
+
+Pose2 Mapper::pose_estimate() const { return impl_->last_estimate.value_or(impl_->start_pose); }
+
+const GridUpdater& Mapper::grid() const { return impl_->room.grid(); }
+const AsrGraph& Mapper::graph() const { return impl_->graph; }
+const AsrStore& Mapper::store() const { return impl_->store; }
+const MapperStats& Mapper::stats() const { return impl_->stats; }
+
+std::vector<Mapper::MapSegment> Mapper::master_map(bool corrected) const {
+  std::vector<MapSegment> out;
+  for (int id : impl_->store.ids()) {
+    const Asr asr = impl_->store.load(id);
+    for (const Segment& s : asr.world_segments(corrected)) out.push_back({id, s});
+  }
+  return out;
+}
+
+}  // namespace cogmap::mapper

@@ -1,0 +1,169 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include "cogmap/mapper/mapper.h"
+
+namespace cogmap::mapper {
+namespace {
+
+/// Range along a ray to the nearest of `walls`, or nullopt beyond `max_range_m`.
+std::optional<double> cast(const Point2& origin, double heading_rad,
+                           const std::vector<Segment>& walls, double max_range_m) {
+  const Point2 d{std::cos(heading_rad), std::sin(heading_rad)};
+  double best = std::numeric_limits<double>::infinity();
+  for (const Segment& w : walls) {
+    const Point2 e = w.b - w.a;
+    const double denom = d.x() * e.y() - d.y() * e.x();
+    if (std::abs(denom) < 1e-12) continue;
+    const Point2 ao = w.a - origin;
+    const double t = (ao.x() * e.y() - ao.y() * e.x()) / denom;
+    const double u = (ao.x() * d.y() - ao.y() * d.x()) / denom;
+    if (t > 0.0 && u >= 0.0 && u <= 1.0) best = std::min(best, t);
+  }
+  if (best > max_range_m) return std::nullopt;
+  return best;
+}
+
+/// Frames of a robot driving the waypoints at 0.5 m/s with ideal sonar (axis ray only).
+/// `drift_rad_per_m` rotates the odometry heading in proportion to the distance driven.
+std::vector<SensorFrame> drive(const std::vector<Point2>& waypoints,
+                               const std::vector<Segment>& walls, const RobotGeometry& robot,
+                               double drift_rad_per_m) {
+  std::vector<SensorFrame> frames;
+  const double step_m = 0.05;  // 0.5 m/s at 10 Hz
+  double time_s = 0.0, travelled_m = 0.0;
+  Pose2 odom{waypoints[0].x(), waypoints[0].y(), 0.0};
+  for (std::size_t w = 1; w < waypoints.size(); ++w) {
+    const Point2 a = waypoints[w - 1], b = waypoints[w];
+    const double heading = std::atan2(b.y() - a.y(), b.x() - a.x());
+    const int steps = static_cast<int>(std::round((b - a).norm() / step_m));
+    for (int i = 1; i <= steps; ++i) {
+      const Point2 p = a + (b - a) * (static_cast<double>(i) / steps);
+      const Pose2 truth{p.x(), p.y(), heading};
+      travelled_m += step_m;
+      const double odom_heading = heading + drift_rad_per_m * travelled_m;
+      odom = {odom.x_m + step_m * std::cos(odom_heading),
+              odom.y_m + step_m * std::sin(odom_heading), wrap_angle_rad(odom_heading)};
+      SensorFrame f;
+      time_s += 0.1;
+      f.time_s = time_s;
+      f.true_pose = truth;
+      // The odometry frame starts at the start pose, so the mapper's start pose is identity.
+      f.odometry = odom;
+      for (int s = 0; s < static_cast<int>(robot.sonars.size()); ++s) {
+        const SonarMount& m = robot.sonars[s];
+        const Point2 origin = truth.transform({m.x_m, m.y_m});
+        const auto r =
+            cast(origin, truth.theta_rad + m.heading_rad, walls, robot.sonar_max_range_m);
+        f.sonar.push_back({s, r.value_or(robot.sonar_max_range_m), r.has_value(), time_s});
+      }
+      frames.push_back(f);
+    }
+  }
+  return frames;
+}
+
+std::vector<Segment> rectangle(double x0, double y0, double x1, double y1) {
+  return {{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x1, y1}, {x0, y1}}, {{x0, y1}, {x0, y0}}};
+}
+
+double distance_to_walls(const Point2& p, const std::vector<Segment>& walls) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Segment& w : walls) best = std::min(best, distance_to_segment_m(p, w));
+  return best;
+}
+
+/// Median distance of 5 cm samples of the map to the true walls.
+double median_wall_error(const std::vector<Mapper::MapSegment>& map,
+                         const std::vector<Segment>& walls) {
+  std::vector<double> errors;
+  for (const auto& m : map) {
+    const int n = std::max(1, static_cast<int>(m.segment.length_m() / 0.05));
+    for (int i = 0; i <= n; ++i) {
+      const Point2 p = m.segment.a + (m.segment.b - m.segment.a) * (static_cast<double>(i) / n);
+      errors.push_back(distance_to_walls(p, walls));
+    }
+  }
+  if (errors.empty()) return std::numeric_limits<double>::infinity();
+  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+  return errors[errors.size() / 2];
+}
+
+TEST(Mapper, OneRoomBecomesOneAsrOnTheTrueWalls) {
+  const RobotGeometry robot = p2at_geometry();
+  const auto walls = rectangle(0.0, 0.0, 6.0, 5.0);
+  const auto frames =
+      drive({{1.0, 1.0}, {5.0, 1.0}, {5.0, 4.0}, {1.0, 4.0}, {1.0, 1.5}}, walls, robot, 0.0);
+  MapperOptions options;
+  options.localization = LocalizationKind::kNone;
+  MemoryAsrStore store;
+  Mapper mapper(options, robot, store, Pose2{});
+  int rooms_seen = 0;
+  mapper.set_room_listener([&](const Asr& asr, const AsrTrace& trace) {
+    ++rooms_seen;
+    EXPECT_EQ(trace.asr_id, asr.id);
+    EXPECT_FALSE(trace.extracted.empty());
+  });
+  for (const SensorFrame& f : frames) mapper.process(f);
+  const auto id = mapper.finish();
+  ASSERT_TRUE(id.has_value());
+  EXPECT_EQ(rooms_seen, 1);
+  EXPECT_EQ(store.ids().size(), 1u);
+  const auto map = mapper.master_map(true);
+  ASSERT_FALSE(map.empty());
+  EXPECT_LT(median_wall_error(map, walls), 0.1);
+  EXPECT_GT(mapper.stats().readings_used, 0u);
+  EXPECT_EQ(mapper.stats().rejected.total(), 0u);
+}
+
+TEST(Mapper, BadReadingsAreCountedNotMapped) {
+  const RobotGeometry robot = p2at_geometry();
+  MapperOptions options;
+  MemoryAsrStore store;
+  Mapper mapper(options, robot, store, Pose2{});
+  SensorFrame f;
+  f.time_s = 0.1;
+  f.sonar = {{0, std::numeric_limits<double>::quiet_NaN(), true, 0.1},
+             {1, -1.0, true, 0.1},
+             {2, 99.0, true, 0.1},
+             {77, 1.0, true, 0.1}};
+  mapper.process(f);
+  EXPECT_EQ(mapper.stats().rejected.total(), 4u);
+  EXPECT_EQ(mapper.stats().readings_used, 0u);
+}
+
+TEST(Mapper, DistanceBoundariesSplitACorridorAndEmUndoesHeadingDrift) {
+  const RobotGeometry robot = p2at_geometry();
+  // A 2.4 m corridor, 24 m long; the robot drives its centre line.
+  const std::vector<Segment> walls{{{-1.0, -1.2}, {25.0, -1.2}}, {{-1.0, 1.2}, {25.0, 1.2}}};
+  const double drift = 1.0 * std::numbers::pi / 180.0;  // 1° of heading error per metre
+  const auto frames = drive({{0.0, 0.0}, {22.0, 0.0}}, walls, robot, drift);
+  auto run = [&](LocalizationKind kind, std::vector<Mapper::MapSegment>* map, Pose2* last) {
+    MapperOptions options;
+    options.boundary = BoundaryKind::kDistance;
+    options.distance.asr_distance_m = 4.0;
+    options.localization = kind;
+    MemoryAsrStore store;
+    Mapper mapper(options, robot, store, Pose2{});
+    for (const SensorFrame& f : frames) mapper.process(f);
+    mapper.finish();
+    *map = mapper.master_map(true);
+    *last = mapper.pose_estimate();
+    return store.ids().size();
+  };
+  std::vector<Mapper::MapSegment> map_odometry, map_em;
+  Pose2 last_odometry, last_em;
+  EXPECT_GE(run(LocalizationKind::kNone, &map_odometry, &last_odometry), 5u);
+  EXPECT_GE(run(LocalizationKind::kEm, &map_em, &last_em), 5u);
+  // 22 m at 1°/m leaves odometry 22° off; EM re-aligns every 4 m room to the previous one.
+  EXPECT_NEAR(last_odometry.theta_rad, 22.0 * drift, 1e-6);
+  EXPECT_LT(std::abs(last_em.theta_rad), std::abs(last_odometry.theta_rad) / 3.0);
+  EXPECT_LT(median_wall_error(map_em, walls), median_wall_error(map_odometry, walls));
+}
+
+}  // namespace
+}  // namespace cogmap::mapper
