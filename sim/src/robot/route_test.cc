@@ -25,9 +25,8 @@ struct RouteResult {
 };
 
 // Turns towards the next waypoint (in place when far off heading), drives at 0.5 m/s.
-RouteResult follow(const char* world_name, const std::vector<mapper::Point2>& waypoints,
+RouteResult follow(const WorldSpec& world, const std::vector<mapper::Point2>& waypoints,
                    int max_cycles) {
-  const WorldSpec world = load_world(world_path(world_name));
   SimRobot robot(world, SimRobotOptions{}, 11);
   RouteResult result;
   for (int i = 0; i < max_cycles && result.reached < waypoints.size(); ++i) {
@@ -46,6 +45,11 @@ RouteResult follow(const char* world_name, const std::vector<mapper::Point2>& wa
   return result;
 }
 
+RouteResult follow(const char* world_name, const std::vector<mapper::Point2>& waypoints,
+                   int max_cycles) {
+  return follow(load_world(world_path(world_name)), waypoints, max_cycles);
+}
+
 TEST(Routes, NineRoomsSnakeVisitsEveryRoom) {
   const std::vector<mapper::Point2> route{
       {2.5, 12.5}, {5, 12.5}, {7.5, 12.5}, {10, 12.5}, {12.5, 12.5}, {12.5, 10},
@@ -54,6 +58,16 @@ TEST(Routes, NineRoomsSnakeVisitsEveryRoom) {
   const RouteResult r = follow("nine_rooms.yaml", route, 4000);
   EXPECT_EQ(r.reached, route.size());
   EXPECT_FALSE(r.stalled);
+}
+
+TEST(Routes, AClosedDoorStopsTheRouteAndStalls) {
+  WorldSpec world = load_world(world_path("nine_rooms.yaml"));
+  WallPolyline door;
+  door.points = {{5.0, 12.0}, {5.0, 13.0}};  // close the door between rooms 1 and 2
+  world.walls.push_back(door);
+  const RouteResult r = follow(world, {{2.5, 12.5}, {5, 12.5}, {7.5, 12.5}}, 300);
+  EXPECT_EQ(r.reached, 1u);
+  EXPECT_TRUE(r.stalled);
 }
 
 TEST(Routes, HallwayLoopGoesRound) {
