@@ -7,7 +7,6 @@
 #include <numbers>
 #include <vector>
 
-#include "cogmap/mapper/grid/bresenham.h"
 #include "cogmap/mapper/nav/controller.h"
 #include "nav/nav_core.h"
 
@@ -33,8 +32,18 @@ class Explorer final : public Controller {
       started_ = true;
     }
     remember_path(input.pose.translation());
-    core_.check_stuck(input);
-    heading_rad_ = choose_direction(input);
+    const bool stuck = core_.check_stuck(input);
+    // Commit to a goal direction for a while: re-scoring every cycle flips between nearly
+    // equal directions and the robot spins on the spot.
+    const double now = input.frame->time_s;
+    if (!committed_ || stuck || core_.vfh().blocked(core_.vfh().sector_of(heading_rad_)) ||
+        (input.pose.translation() - chosen_at_).norm() >= options_.commit_m ||
+        now - chosen_s_ >= options_.commit_s) {
+      heading_rad_ = choose_direction(input);
+      committed_ = true;
+      chosen_at_ = input.pose.translation();
+      chosen_s_ = now;
+    }
     if (const auto cmd = core_.recover(input, heading_rad_)) return *cmd;
     return core_.drive_toward(input, heading_rad_);
   }
@@ -51,22 +60,23 @@ class Explorer final : public Controller {
 
   /// Unexplored (exactly 0) cells along the ray from the robot in `direction_rad` out to the
   /// horizon, stopping at the first obstacle: space behind a wall is not reachable from here.
-  int unexplored_along(const NavInput& input, double direction_rad) const {
+  /// Each cell weighs 1 - t/(horizon + cell), so nearer unexplored space (less travel, seen
+  /// sooner by the sonar) counts more (§1.1.4). The ray is sampled every cell side rather than
+  /// walked cell by cell, so a diagonal counts the same length as an axis-parallel ray.
+  double unexplored_along(const NavInput& input, double direction_rad) const {
     const GridGeometry& g = core_.field().geometry();
     const Point2 from = input.pose.translation();
-    const Point2 to =
-        from + options_.horizon_m * Point2(std::cos(direction_rad), std::sin(direction_rad));
-    const CellIndex start = g.cell_of(from);
-    int count = 0;
-    for_each_line_cell(start, g.cell_of(to), [&](CellIndex c) {
-      if (c == start) return true;
-      if (core_.field().occupied(c)) return false;
+    const Point2 step = g.cell_size_m() * Point2(std::cos(direction_rad), std::sin(direction_rad));
+    const int samples = static_cast<int>(options_.horizon_m / g.cell_size_m());
+    double count = 0.0;
+    for (int i = 1; i <= samples; ++i) {
+      const CellIndex c = g.cell_of(from + i * step);
+      if (core_.field().occupied(c)) break;
       // Cells beyond the room grid's current extent were never seen: unexplored.
       const float value = input.grid && g.contains(c) ? input.grid->histogram_at(c) : 0.0f;
-      if (value > options_.vfh.occupied_above) return false;
-      if (value == 0.0f) ++count;
-      return true;
-    });
+      if (value > options_.vfh.occupied_above) break;
+      if (value == 0.0f) count += 1.0 - static_cast<double>(i) / (samples + 1);
+    }
     return count;
   }
 
@@ -105,6 +115,9 @@ class Explorer final : public Controller {
   ExploreOptions options_;
   NavCore core_;
   bool started_ = false;
+  bool committed_ = false;      // a goal direction has been chosen
+  Point2 chosen_at_{0.0, 0.0};  // where, and when, it was chosen
+  double chosen_s_ = 0.0;
   double heading_rad_ = 0.0;  // the exploring direction chosen last cycle, world
   std::deque<Point2> path_;   // recent positions, every path_spacing_m
 };

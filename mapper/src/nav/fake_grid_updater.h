@@ -32,6 +32,22 @@ class FakeGridUpdater final : public GridUpdater {
     }
   }
 
+  /// Marks unexplored cells within `radius_m` of `p` as seen empty (-1): a crude stand-in for
+  /// the sonar sweeping the floor around a moving robot. Returns how many cells changed.
+  int reveal(const Point2& p, double radius_m) {
+    const GridGeometry& g = grid_.geometry();
+    int changed = 0;
+    for (int y = 0; y < g.height(); ++y) {
+      for (int x = 0; x < g.width(); ++x) {
+        if (grid_.get({x, y}) == 0.0f && (g.center_of({x, y}) - p).norm() <= radius_m) {
+          grid_.set({x, y}, -1.0f);
+          ++changed;
+        }
+      }
+    }
+    return changed;
+  }
+
   GridKind kind() const override { return GridKind::kHimm; }
   void reset(const Point2&) override {}
   void mark_robot(const Pose2&) override {}

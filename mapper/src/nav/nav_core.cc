@@ -22,7 +22,7 @@ NavCore::NavCore(const CoreOptions& options)
       vfh_(options.vfh),
       recovery_(options.stuck_time_s, options.recovery) {}
 
-bool NavCore::sense(const NavInput& input) {
+bool NavCore::sense(const NavInput& input, double goal_range_m) {
   if (input.frame == nullptr) return false;
   robot_ = input.robot ? *input.robot : RobotGeometry{};
   // Never command more than the robot can do.
@@ -30,7 +30,8 @@ bool NavCore::sense(const NavInput& input) {
   max_turn_radps_ = std::clamp(options_.max_turn_rate_radps, 0.0, robot_.max_turn_rate_radps);
   memory_.add_frame(*input.frame, input.pose, robot_);
   field_.build(input.pose.translation(), input.grid, memory_);
-  vfh_.build(field_.points());
+  goal_range_m_ = goal_range_m;
+  vfh_.build(field_.points(), goal_range_m_);
   trace_.density = vfh_.density();
   trace_.blocked = vfh_.blocked_mask();
   trace_.front_clearance_m =
@@ -48,7 +49,7 @@ bool NavCore::check_stuck(const NavInput& input) {
   // it (a low step, glass, a chair leg), so the recovery's turn and VFH steer around it.
   memory_.add_contact(input.pose, robot_, f.time_s, last_forward_);
   field_.build(input.pose.translation(), input.grid, memory_);
-  vfh_.build(field_.points());
+  vfh_.build(field_.points(), goal_range_m_);
   recovery_.start(f.time_s, input.pose);
   ++trace_.recoveries;
   return true;

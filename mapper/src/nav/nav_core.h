@@ -3,6 +3,7 @@
 /// obstacle field, polar histogram), stuck detection and recovery, and driving toward a goal
 /// direction through VFH with the front safety check. The behaviours only choose the goal.
 
+#include <limits>
 #include <optional>
 
 #include "cogmap/mapper/nav/controller.h"
@@ -28,9 +29,9 @@ class NavCore {
  public:
   explicit NavCore(const CoreOptions& options);
 
-  /// Remembers this frame's echoes, collects the obstacles and builds the polar histogram.
-  /// False (and a zero command is due) without a frame.
-  bool sense(const NavInput& input);
+  /// Remembers this frame's echoes, collects the obstacles and builds the polar histogram
+  /// from those within `goal_range_m`. False (and a zero command is due) without a frame.
+  bool sense(const NavInput& input, double goal_range_m = std::numeric_limits<double>::infinity());
 
   /// Stuck detection for this cycle; when stuck, records a contact and starts the recovery.
   /// Returns true when a recovery started this cycle.
@@ -66,8 +67,9 @@ class NavCore {
   RobotGeometry robot_;
   double speed_mps_ = 0.0;
   double max_turn_radps_ = 0.0;
-  bool moving_ = false;       // the last command moved the robot
-  bool last_forward_ = true;  // the last translation was forward
+  double goal_range_m_ = 0.0;  // obstacles beyond the goal do not block
+  bool moving_ = false;        // the last command moved the robot
+  bool last_forward_ = true;   // the last translation was forward
   NavTrace trace_;
 };
 

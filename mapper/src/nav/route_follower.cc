@@ -20,9 +20,14 @@ class RouteFollower final : public Controller {
       : options_(options), waypoints_(std::move(waypoints)), core_(core_options(options)) {}
 
   VelocityCommand step(const NavInput& input) override {
-    if (!core_.sense(input)) return core_.stop(NavMode::kIdle);
+    if (input.frame == nullptr) return core_.stop(NavMode::kIdle);
     advance(input.pose.translation());
     if (done()) return core_.stop(NavMode::kDone);
+    // What lies beyond the waypoint (plus the robot's clearance) need not block the way there:
+    // a waypoint near a wall must stay reachable.
+    const double goal_range_m =
+        (waypoints_[index_] - input.pose.translation()).norm() + options_.vfh.safety_radius_m;
+    core_.sense(input, goal_range_m);
     if (core_.check_stuck(input) && ++attempts_ > options_.recovery.max_attempts) {
       // This waypoint has defeated every recovery: give it up and try the next one.
       ++index_;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "cogmap/mapper/grid/grid.h"
+
 namespace cogmap::mapper::nav {
 namespace {
 
@@ -18,11 +20,13 @@ Vfh::Vfh(const VfhOptions& options) : options_(options) {
   density_.assign(count, 0.0);
   smoothed_.assign(count, 0.0);
   blocked_.assign(count, 0);
-  // Automatic τ_high: one cell just above the occupancy threshold (certainty 8 on the HIMM
-  // scale) blocks its sectors once it is within 80 % of the window, i.e. 2 m for the default
-  // 2.5 m window, which leaves 3 s at 0.5 m/s to steer around it.
-  const double c = std::floor(options_.occupied_above) + 1.0;
-  threshold_ = options_.threshold > 0.0 ? options_.threshold : options_.kappa * c * c * 0.2;
+  // Automatic τ_high: a cell of full certainty (15) blocks its sectors once within
+  // block_range_m (1.5 m: 2.4 s at 0.5 m/s to steer around it); a lone echo or a barely
+  // occupied cell (certainty 8) never blocks on its own, so one spurious sonar reading cannot
+  // close a doorway. Farther walls only make the robot prefer other directions.
+  const double c = kHistogramMax;
+  threshold_ =
+      options_.threshold > 0.0 ? options_.threshold : c * c * kappa_at(options_.block_range_m);
 }
 
 int Vfh::wrap(int sector) const {
@@ -46,13 +50,13 @@ double Vfh::kappa_at(double distance_m) const {
   return options_.kappa * (1.0 - distance_m / options_.window_m);
 }
 
-void Vfh::build(const std::vector<ObstaclePoint>& obstacles) {
+void Vfh::build(const std::vector<ObstaclePoint>& obstacles, double range_m) {
   const int n = sector_count();
   std::fill(density_.begin(), density_.end(), 0.0);
   for (const ObstaclePoint& o : obstacles) {
     const double d = o.offset_m.norm();
     const double kappa = kappa_at(d);
-    if (kappa <= 0.0 || d <= 0.0) continue;
+    if (kappa <= 0.0 || d <= 0.0 || d > range_m) continue;
     const double beta = std::atan2(o.offset_m.y(), o.offset_m.x());  // Eq. 2.15
     const double c = o.certainty;
     const double m = c * c * kappa;  // Eq. 2.16 with κ(d) scaled by closeness

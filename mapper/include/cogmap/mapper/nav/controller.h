@@ -66,11 +66,11 @@ class Controller {
 /// Vector Field Histogram (thesis §2.2.3, Eqs. 2.15-2.17; Borenstein & Koren 1991, with the
 /// obstacle enlargement and hysteresis of VFH+, Ulrich & Borenstein 1998).
 struct VfhOptions {
-  double sector_deg = 5.0;  ///< polar sweep increment, thesis §2.2.3 ("5° increments")
-  double window_m = 2.5;    ///< active window radius; also d_max of κ(d) = kappa·(1 - d/d_max)
-  double kappa = 1.0;       ///< κ of Eq. 2.16, scaled by closeness (see docs)
-  double threshold = 0.0;   ///< τ_high: sector blocked above it; 0 = auto (one cell of
-                            ///< certainty 8 at 0.8·window_m)
+  double sector_deg = 5.0;     ///< polar sweep increment, thesis §2.2.3 ("5° increments")
+  double window_m = 2.5;       ///< active window radius; also d_max of κ(d) = kappa·(1 - d/d_max)
+  double kappa = 1.0;          ///< κ of Eq. 2.16, scaled by closeness (see docs)
+  double threshold = 0.0;      ///< τ_high: sector blocked above it; 0 = auto from block_range_m
+  double block_range_m = 1.5;  ///< auto τ_high: a cell of full certainty (15) blocks within this
   double hysteresis_ratio = 0.5;  ///< τ_low = ratio·τ_high; between the two a sector keeps
                                   ///< its previous state (VFH+ binary histogram)
   double safety_radius_m = 0.33;  ///< r: robot half-width 0.2525 m + 0.08 m margin; obstacles
@@ -138,10 +138,12 @@ struct ExploreOptions {
   RecoveryOptions recovery;
   double horizon_m = 4.0;         ///< unexplored cells are counted this far along a sector
   double hysteresis_deg = 30.0;   ///< sectors this close to the current exploring heading...
-  double hysteresis_bonus = 5.0;  ///< ...score this many extra cells (no dithering)
-  double path_penalty = 3.0;      ///< score lost per recently visited point in a sector
+  double hysteresis_bonus = 2.0;  ///< ...score this many extra (distance-weighted) cells
+  double path_penalty = 1.0;      ///< score lost per recently visited point in a sector
   double path_spacing_m = 0.25;   ///< the recent path is sampled every this far
   std::size_t path_points = 400;  ///< recent path length kept (~100 m at 0.25 m)
+  double commit_m = 1.0;          ///< the goal direction is re-chosen after this travel...
+  double commit_s = 5.0;          ///< ...or this time, or as soon as its sector is blocked
   double path_ignore_m = 1.0;     ///< path points this close are the trail just left behind
 };
 

@@ -4,6 +4,7 @@
 /// covers [k·α - α/2, k·α + α/2), so sector 0 is centred on the world +x axis.
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
@@ -30,9 +31,11 @@ class Vfh {
  public:
   explicit Vfh(const VfhOptions& options);
 
-  /// Eqs. 2.15-2.17 over `obstacles` (those beyond window_m are ignored), each enlarged over
-  /// the sectors within asin(r/d); then smoothing and the hysteresis threshold.
-  void build(const std::vector<ObstaclePoint>& obstacles);
+  /// Eqs. 2.15-2.17 over `obstacles` (those beyond window_m or `range_m` are ignored), each
+  /// enlarged over the sectors within asin(r/d); then smoothing and the hysteresis threshold.
+  /// `range_m` lets a route follower ignore what lies beyond its waypoint.
+  void build(const std::vector<ObstaclePoint>& obstacles,
+             double range_m = std::numeric_limits<double>::infinity());
 
   /// The candidate direction (world) of least cost |target - c| + heading_weight·|heading - c|:
   /// candidates are the target itself when it lies inside a wide valley away from its edges,

@@ -1,0 +1,102 @@
+#include "nav/obstacle_memory.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cogmap/mapper/nav/vfh.h"
+#include "nav/fake_grid_updater.h"
+#include "nav/obstacle_field.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+SensorFrame frame(double time_s, std::vector<SonarReading> sonar) {
+  SensorFrame f;
+  f.time_s = time_s;
+  f.sonar = std::move(sonar);
+  return f;
+}
+
+TEST(ObstacleMemory, PlacesEchoesOnTheTransducerAxisInTheWorld) {
+  const RobotGeometry robot = p2at_geometry();
+  ObstacleMemory memory{MemoryOptions{}};
+  // Sonar 0 looks left (90°) from (0.147, 0.136); the robot faces north at (1, 2).
+  memory.add_frame(frame(0.0, {{0, 1.0, true, 0.0}}), {1.0, 2.0, M_PI / 2}, robot);
+  ASSERT_EQ(memory.hits().size(), 1u);
+  EXPECT_NEAR(memory.hits()[0].world_m.x(), 1.0 - 1.136, 1e-9);
+  EXPECT_NEAR(memory.hits()[0].world_m.y(), 2.0 + 0.147, 1e-9);
+}
+
+TEST(ObstacleMemory, SkipsInvalidReadingsAndForgetsOldEchoes) {
+  const RobotGeometry robot = p2at_geometry();
+  ObstacleMemory memory{MemoryOptions{}};  // keep 3 s, max range 3 m
+  memory.add_frame(frame(0.0, {{3, 1.0, false, 0.0},
+                               {3, std::numeric_limits<double>::quiet_NaN(), true, 0.0},
+                               {3, 0.05, true, 0.0},
+                               {3, 3.5, true, 0.0},
+                               {99, 1.0, true, 0.0},
+                               {4, 1.0, true, 0.0}}),
+                   {}, robot);
+  EXPECT_EQ(memory.hits().size(), 1u);
+  memory.add_frame(frame(2.9, {}), {}, robot);
+  EXPECT_EQ(memory.hits().size(), 1u);
+  memory.add_frame(frame(3.0, {}), {}, robot);
+  EXPECT_TRUE(memory.hits().empty());
+}
+
+TEST(ObstacleMemory, ContactsOutliveEchoes) {
+  const RobotGeometry robot = p2at_geometry();
+  ObstacleMemory memory{MemoryOptions{}};
+  memory.add_contact({}, robot, 1.0, true);
+  ASSERT_EQ(memory.hits().size(), 3u);
+  EXPECT_NEAR(memory.hits()[1].world_m.x(), 0.313 + 0.05, 1e-9);
+  memory.add_frame(frame(10.9, {}), {}, robot);
+  EXPECT_EQ(memory.hits().size(), 3u);
+  memory.add_frame(frame(11.0, {}), {}, robot);
+  EXPECT_TRUE(memory.hits().empty());
+}
+
+TEST(ObstacleField, EchoesBlockEvenWithAnEmptyRoomGrid) {
+  // Just after a doorway the new room grid knows nothing; the front sonars see a wall 0.8 m
+  // ahead and VFH must block straight ahead anyway.
+  const RobotGeometry robot = p2at_geometry();
+  testing::FakeGridUpdater fresh{-5.0, -5.0, 10.0, 0.0f};
+  ObstacleMemory memory{MemoryOptions{}};
+  memory.add_frame(frame(0.0, {{3, 0.8, true, 0.0}, {4, 0.8, true, 0.0}}), {}, robot);
+  ObstacleField field(VfhOptions{}, MemoryOptions{});
+  field.build(Point2(0.0, 0.0), &fresh, memory);
+  EXPECT_EQ(field.points().size(), 2u);
+  Vfh vfh{VfhOptions{}};
+  vfh.build(field.points());
+  EXPECT_FALSE(vfh.blocked(0));  // one echo per cell: could be a spurious reading
+  // The next cycle confirms both echoes: certainty 16 -> 15 per cell, now blocking.
+  memory.add_frame(frame(0.1, {{3, 0.8, true, 0.1}, {4, 0.8, true, 0.1}}), {}, robot);
+  field.build(Point2(0.0, 0.0), &fresh, memory);
+  vfh.build(field.points());
+  EXPECT_TRUE(vfh.blocked(0));
+}
+
+TEST(ObstacleField, GridAndMemoryMergeByMaximumNotSum) {
+  const RobotGeometry robot = p2at_geometry();
+  testing::FakeGridUpdater grid{-5.0, -5.0, 10.0, -1.0f};
+  ObstacleMemory memory{MemoryOptions{}};
+  // Sonar 3 on the axis at 10°: an echo of 1 m lands near (1.23, 0.20).
+  memory.add_frame(frame(0.0, {{3, 1.0, true, 0.0}}), {}, robot);
+  const Point2 hit = memory.hits()[0].world_m;
+  grid.set(hit.x(), hit.y(), 12.0f);
+  ObstacleField field(VfhOptions{}, MemoryOptions{});
+  field.build(Point2(0.0, 0.0), &grid, memory);
+  ASSERT_EQ(field.points().size(), 1u);
+  EXPECT_FLOAT_EQ(field.points()[0].certainty, 12.0f);
+  // Two echoes in the same cell add like HIMM increments (8 + 8, capped at 15).
+  ObstacleMemory twice{MemoryOptions{}};
+  twice.add_frame(frame(0.0, {{3, 1.0, true, 0.0}, {3, 1.0, true, 0.0}}), {}, robot);
+  field.build(Point2(0.0, 0.0), nullptr, twice);
+  ASSERT_EQ(field.points().size(), 1u);
+  EXPECT_FLOAT_EQ(field.points()[0].certainty, 15.0f);
+}
+
+}  // namespace
+}  // namespace cogmap::mapper::nav
