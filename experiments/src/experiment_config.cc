@@ -81,12 +81,7 @@ ControllerConfig parse_controller(const Node& block) {
 // overridden node has no line of its own, so the file line alone would point at its parent.
 [[noreturn]] void rethrow_with_override(const ConfigError& e,
                                         const std::vector<std::string>& overrides) {
-  std::string message = e.what();
-  std::string prefix = e.file();
-  if (e.line() > 0) prefix += ":" + std::to_string(e.line());
-  prefix += ": ";
-  if (!e.key().empty()) prefix += e.key() + ": ";
-  if (message.starts_with(prefix)) message = message.substr(prefix.size());
+  const std::string message = bare_message(e);
   for (const std::string& o : overrides) {
     const std::string key = o.substr(0, o.find('='));
     if (!e.key().empty() &&
@@ -98,6 +93,15 @@ ControllerConfig parse_controller(const Node& block) {
 }
 
 }  // namespace
+
+std::string bare_message(const ConfigError& e) {
+  std::string message = e.what();
+  std::string prefix = e.file();
+  if (e.line() > 0) prefix += ":" + std::to_string(e.line());
+  prefix += ": ";
+  if (!e.key().empty()) prefix += e.key() + ": ";
+  return message.starts_with(prefix) ? message.substr(prefix.size()) : message;
+}
 
 std::string_view to_string(RobotSource source) {
   switch (source) {

@@ -65,6 +65,10 @@ Experiment load_experiment(const std::filesystem::path& path,
 /// their own overrides). `file` is the path errors name and relative paths resolve against.
 Experiment parse_experiment(const yaml::Node& root, const std::filesystem::path& file);
 
+/// The message of a ConfigError without its "file:line: key: " prefix (for re-raising it
+/// with more context).
+std::string bare_message(const yaml::ConfigError& error);
+
 /// Parses the `mapper` block into MapperOptions (defaults: thesis Table 4.1).
 mapper::MapperOptions parse_mapper_options(const yaml::Node& block);
 

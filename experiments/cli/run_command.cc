@@ -1,0 +1,117 @@
+// `cogmap run EXPERIMENT.yaml`: one simulated run into a run directory (docs/cli.md).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/number_format.h"
+#include "cogmap/experiments/progress.h"
+#include "cogmap/experiments/runner.h"
+#include "command_registry.h"
+
+namespace cogmap::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using experiments::format_double;
+
+struct RunArgs {
+  std::string experiment;
+  std::string out;
+  std::optional<std::uint64_t> seed;
+  std::vector<std::string> sets;
+  bool no_figures = false;
+  bool force = false;
+};
+
+std::string opt_text(const std::optional<double>& v) { return v ? format_double(*v) : "n/a"; }
+
+// The one-line summary: the figures a reader looks at first.
+std::string summary_line(const experiments::RunMetrics& m) {
+  std::ostringstream s;
+  s << "asr_count=" << m.asr_count;
+  if (m.map) {
+    s << " wall_error_median_m=" << opt_text(m.map->wall_error_median_m)
+      << " wall_coverage=" << opt_text(m.map->wall_coverage)
+      << " spurious_fraction=" << opt_text(m.map->spurious_fraction);
+  }
+  s << " compression_ratio=" << opt_text(m.memory.compression_ratio);
+  if (m.localization) {
+    s << " ate_rmse_m(odom/corr)=" << format_double(m.localization->ate_rmse_odometry_m) << "/"
+      << format_double(m.localization->ate_rmse_corrected_m)
+      << " heading_error_final_deg(odom/corr)="
+      << format_double(m.localization->heading_error_final_odometry_deg) << "/"
+      << format_double(m.localization->heading_error_final_corrected_deg);
+  }
+  if (m.route_completed) s << " route_completed=" << (*m.route_completed ? "yes" : "no");
+  s << " sim_time_s=" << format_double(m.sim_time_s);
+  if (m.wall_time_s > 0.0) s << " real_time_factor=" << std::lround(m.sim_time_s / m.wall_time_s);
+  return s.str();
+}
+
+int run(const RunArgs& args) {
+  experiments::Experiment experiment;
+  try {
+    experiment = experiments::load_experiment(args.experiment, args.sets, args.seed);
+    experiments::validate_experiment(experiment);
+  } catch (const yaml::ConfigError& e) {
+    std::cerr << "cogmap run: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  const fs::path out =
+      args.out.empty()
+          ? fs::path("runs") / (experiment.name + "_seed" + std::to_string(experiment.seed))
+          : fs::path(args.out);
+  if (fs::exists(out / "metrics.json") && !args.force) {
+    std::cerr << "cogmap run: " << out.string()
+              << " already holds a finished run (metrics.json); pass --force to replace it or "
+                 "choose another --out\n";
+    return kExitBadInput;
+  }
+  experiments::RunOptions options;
+  options.out_dir = out;
+  if (args.no_figures) options.figures = false;
+  experiments::ProgressBar bar(experiments::ProgressBar::stderr_is_terminal());
+  options.on_progress = [&bar](double t_s, double duration_s) {
+    bar.update(t_s / duration_s, "t = " + std::to_string(static_cast<long>(t_s)) + " s");
+  };
+  try {
+    const experiments::RunSummary summary = experiments::run_experiment(experiment, options);
+    bar.finish();
+    std::cout << "cogmap run: " << experiment.name << " (seed " << experiment.seed
+              << "): outputs in " << summary.out_dir.string() << "\n"
+              << summary_line(summary.metrics) << "\n";
+    return kExitOk;
+  } catch (const yaml::ConfigError& e) {
+    bar.finish();
+    std::cerr << "cogmap run: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    bar.finish();
+    std::cerr << "cogmap run: " << e.what() << "\n";
+    return kExitFailed;
+  }
+}
+
+const CommandRegistrar kRegistrar{
+    "run", [](CLI::App& app, int& exit_code) {
+      auto args = std::make_shared<RunArgs>();
+      CLI::App* sub = app.add_subcommand(
+          "run", "Run one experiment in the simulator and write its run directory");
+      sub->add_option("experiment", args->experiment, "experiment file (experiments/*.yaml)")
+          ->required()
+          ->check(CLI::ExistingFile);
+      sub->add_option("--out", args->out, "run directory (default runs/<name>_seed<N>)");
+      sub->add_option("--seed", args->seed, "replaces the experiment's seed");
+      sub->add_option("--set", args->sets, "override any key, e.g. --set mapper.cell_scale_mm=55")
+          ->take_all()
+          ->allow_extra_args(false);
+      sub->add_flag("--no-figures", args->no_figures, "skip the PNG figures (faster)");
+      sub->add_flag("--force", args->force, "replace a finished run in --out");
+      sub->callback([&exit_code, args] { exit_code = run(*args); });
+    }};
+
+}  // namespace
+}  // namespace cogmap::cli

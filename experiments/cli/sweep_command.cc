@@ -1,0 +1,140 @@
+// `cogmap sweep SWEEP.yaml` and `cogmap sweep --merge DIR...` (docs/sweeps.md).
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "cogmap/experiments/atomic_file.h"
+#include "cogmap/experiments/progress.h"
+#include "cogmap/experiments/runner.h"
+#include "cogmap/experiments/sweep_plots.h"
+#include "cogmap/experiments/sweep_runner.h"
+#include "command_registry.h"
+
+namespace cogmap::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SweepArgs {
+  std::vector<std::string> inputs;
+  unsigned jobs = 0;
+  std::string shard = "1/1";
+  std::string out;
+  bool merge = false;
+  bool no_figures = false;
+  bool no_plots = false;
+};
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error(p.string() + ": cannot read");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void plot(const experiments::ResultsTable& table, const fs::path& out, bool enabled) {
+  if (!enabled) return;
+  try {
+    const auto files = experiments::write_sweep_plots(table, out / "plots");
+    if (!files.empty()) std::cout << "plots in " << (out / "plots").string() << "\n";
+  } catch (const std::exception& e) {
+    // The results are safe on disk already; a missing plot is worth a warning, not a failure.
+    std::cerr << "cogmap sweep: plots failed: " << e.what() << "\n";
+  }
+}
+
+int merge(const SweepArgs& args) {
+  const fs::path out = args.out.empty() ? fs::path(".") : fs::path(args.out);
+  try {
+    std::vector<fs::path> dirs(args.inputs.begin(), args.inputs.end());
+    std::vector<std::pair<std::string, experiments::ResultsTable>> tables;
+    for (const fs::path& f : experiments::results_files(dirs)) {
+      if (fs::weakly_canonical(f) == fs::weakly_canonical(out / "results.csv")) continue;
+      tables.emplace_back(f.string(), experiments::parse_csv(read_text(f), f.string()));
+    }
+    const experiments::ResultsTable merged = experiments::merge_results(tables);
+    experiments::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
+    std::cout << "cogmap sweep: merged " << tables.size() << " files, " << merged.rows.size()
+              << " runs into " << (out / "results.csv").string() << "\n";
+    plot(merged, out, !args.no_plots);
+    return kExitOk;
+  } catch (const std::exception& e) {
+    std::cerr << "cogmap sweep --merge: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+}
+
+int sweep(const SweepArgs& args) {
+  if (args.inputs.size() != 1) {
+    std::cerr << "cogmap sweep: expected exactly one SWEEP.yaml (or --merge DIR...)\n";
+    return kExitBadInput;
+  }
+  experiments::SweepSpec spec;
+  experiments::SweepOptions options;
+  std::vector<experiments::PlannedRun> planned;
+  try {
+    options.shard = experiments::parse_shard(args.shard);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "cogmap sweep: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  try {
+    spec = experiments::load_sweep(args.inputs.front());
+    options.out_dir = args.out.empty() ? fs::path("sweeps") / fs::path(spec.file).stem().stem()
+                                       : fs::path(args.out);
+    options.jobs = args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
+    options.progress = experiments::ProgressBar::stderr_is_terminal();
+    planned = experiments::plan_sweep(spec, options);
+    if (!planned.empty()) experiments::validate_experiment(planned.front().experiment);
+  } catch (const yaml::ConfigError& e) {
+    std::cerr << "cogmap sweep: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  const bool no_figures = args.no_figures;
+  try {
+    const auto outcome = experiments::run_sweep(
+        spec, planned, options, [no_figures](const experiments::PlannedRun& p) {
+          experiments::RunOptions run_options;
+          run_options.out_dir = p.dir;
+          if (no_figures) run_options.figures = false;
+          (void)experiments::run_experiment(p.experiment, run_options);
+        });
+    std::cout << "cogmap sweep: " << outcome.runs << " runs in shard " << options.shard.k << "/"
+              << options.shard.n << ": " << outcome.finished << " run, " << outcome.skipped
+              << " already finished, " << outcome.failures.size() << " failed\n"
+              << "results in " << outcome.results_csv.string() << "\n";
+    for (const auto& f : outcome.failures) std::cerr << "cogmap sweep: failed: " << f << "\n";
+    if (options.shard.n == 1) plot(outcome.results, options.out_dir, !args.no_plots);
+    return outcome.failures.empty() ? kExitOk : kExitFailed;
+  } catch (const std::exception& e) {
+    std::cerr << "cogmap sweep: " << e.what() << "\n";
+    return kExitFailed;
+  }
+}
+
+const CommandRegistrar kRegistrar{
+    "sweep", [](CLI::App& app, int& exit_code) {
+      auto args = std::make_shared<SweepArgs>();
+      CLI::App* sub = app.add_subcommand(
+          "sweep",
+          "Run every combination of a sweep file (parallel, resumable, shardable), or "
+          "merge shard results with --merge DIR...");
+      sub->add_option("inputs", args->inputs, "SWEEP.yaml, or with --merge the shard output dirs")
+          ->required();
+      sub->add_option("--jobs,-j", args->jobs, "worker threads (default: all cores)");
+      sub->add_option("--shard", args->shard, "run only shard K of N, e.g. 3/8 (default 1/1)");
+      sub->add_option(
+          "--out", args->out,
+          "output directory (default sweeps/<sweep name>; for --merge the current one)");
+      sub->add_flag("--merge", args->merge, "join results files of shard outputs");
+      sub->add_flag("--no-figures", args->no_figures, "skip each run's PNG figures");
+      sub->add_flag("--no-plots", args->no_plots, "skip the per-metric plots");
+      sub->callback([&exit_code, args] { exit_code = args->merge ? merge(*args) : sweep(*args); });
+    }};
+
+}  // namespace
+}  // namespace cogmap::cli

@@ -1,0 +1,56 @@
+#pragma once
+/// metrics.json of one run (docs/metrics.md): the required keys of docs/formats.md plus
+/// extras (per-room sizes, rejected readings, the map before localisation). Metrics that need
+/// ground truth are omitted, not faked, when there is none.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cogmap/experiments/metrics.h"
+#include "cogmap/mapper/grid/grid_updater.h"
+
+namespace cogmap::experiments {
+
+/// One finished room as reported in metrics.json "rooms".
+struct RoomReport {
+  RoomSize size;
+  std::optional<int> parent;
+  double heading_correction_deg = 0.0;  ///< EM rotation applied about the reference point
+  double start_time_s = 0.0;
+  double end_time_s = 0.0;
+};
+
+/// Everything metrics.json holds.
+struct RunMetrics {
+  std::string name;  ///< experiment name
+  std::string world;
+  std::uint64_t seed = 0;
+  std::string source;             ///< sim | p2os | log
+  std::string controller;         ///< route | explore | none
+  std::string grid;               ///< himm | mhimm | bayes | dempster_shafer
+  std::string boundary;           ///< doorway | distance
+  std::string localization_kind;  ///< em | none
+  std::size_t asr_count = 0;
+  std::size_t frames = 0;
+  std::optional<bool> route_completed;      ///< route controllers only
+  std::optional<MapAccuracy> map;           ///< after localisation; needs ground truth
+  std::optional<MapAccuracy> map_odometry;  ///< before localisation; needs ground truth
+  MemoryMetrics memory;
+  std::optional<LocalizationAccuracy> localization;  ///< needs ground truth
+  std::size_t readings_used = 0;
+  mapper::RejectedReadings rejected;
+  std::vector<RoomReport> rooms;
+  double sim_time_s = 0.0;           ///< time of the last frame
+  double wall_time_s = 0.0;          ///< run loop + metrics, figures excluded
+  double build_time_s = 0.0;         ///< CPU in the ASR pipeline (mapper stats)
+  double localization_time_s = 0.0;  ///< CPU in EM (mapper stats)
+};
+
+/// The JSON text (2-space indent, keys in a fixed order, shortest round-trip doubles, null for
+/// undefined values). Everything outside "timing" is a pure function of the run's inputs.
+std::string metrics_json_text(const RunMetrics& metrics);
+
+}  // namespace cogmap::experiments

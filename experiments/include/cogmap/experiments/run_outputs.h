@@ -1,0 +1,36 @@
+#pragma once
+/// Writers of a run directory's text products (docs/formats.md "A run's output directory"):
+/// trajectory.csv, map_segments*.csv and map.svg. Every file is written atomically.
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "cogmap/experiments/metrics.h"
+#include "cogmap/mapper/mapper.h"
+
+namespace cogmap::experiments {
+
+/// trajectory.csv: `t_s,true_x_m,true_y_m,true_theta_rad,odom_x_m,odom_y_m,odom_theta_rad,
+/// est_x_m,est_y_m,est_theta_rad`, one row a frame; true columns empty without ground truth.
+std::string trajectory_csv(std::span<const TrajectoryRow> rows);
+
+/// map_segments.csv / map_segments_odom.csv: `asr_id,x1_m,y1_m,x2_m,y2_m`, world frame.
+std::string segments_csv(std::span<const mapper::Mapper::MapSegment> segments);
+
+/// What map.svg shows.
+struct SvgMap {
+  std::vector<mapper::Mapper::MapSegment> map;  ///< the merged corrected map (black)
+  std::vector<mapper::Segment> truth;           ///< true surfaces (light grey, underneath)
+  std::vector<mapper::Point2> path;             ///< the estimated robot path (blue), optional
+  std::vector<std::pair<int, mapper::Point2>> labels;  ///< room id at its reference point
+};
+
+/// The merged polyline map as SVG: world metres (y flipped so north is up), a scale bar.
+std::string map_svg(const SvgMap& map);
+
+/// Just the segments of a master map.
+std::vector<mapper::Segment> segments_of(std::span<const mapper::Mapper::MapSegment> map);
+
+}  // namespace cogmap::experiments

@@ -1,0 +1,68 @@
+#pragma once
+/// Runs one experiment: drives a Robot (simulated, real or replayed) through the mapper and a
+/// controller, then writes the run directory of docs/formats.md (metrics.json last, so its
+/// presence marks a finished run).
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/run_metrics.h"
+#include "cogmap/mapper/seam/robot.h"
+
+namespace cogmap::experiments {
+
+/// What only a simulator knows: the true surfaces and the true start pose. (True poses arrive
+/// with every frame, SensorFrame::true_pose.)
+struct GroundTruth {
+  std::vector<mapper::Segment> surfaces;  ///< world frame
+  mapper::Pose2 start_pose;               ///< world frame
+};
+
+/// How to run (as opposed to what: that is the Experiment).
+struct RunOptions {
+  std::filesystem::path out_dir;  ///< the run directory (created)
+  std::optional<bool> figures;    ///< overrides output.figures (--no-figures)
+  mapper::Pose2 start_pose;       ///< used when there is no ground truth
+  /// Called about once a simulated second with the time reached (progress bars); may be empty.
+  std::function<void(double time_s, double duration_s)> on_progress;
+};
+
+/// The outcome of a finished run.
+struct RunSummary {
+  std::filesystem::path out_dir;
+  RunMetrics metrics;
+};
+
+/// A run that started but could not finish (the robot source or a writer failed).
+class RunError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Checks what only the simulator can check without running: the world file loads and the
+/// `robot` block parses for robot.source `sim`. Throws yaml::ConfigError (file, line, key).
+void validate_experiment(const Experiment& experiment);
+
+/// Builds the simulated world and SimRobot from the experiment and runs it (robot.source must
+/// be `sim`). Throws yaml::ConfigError for a bad world or robot block (bad input) and
+/// RunError when the run itself fails.
+RunSummary run_experiment(const Experiment& experiment, const RunOptions& options);
+
+/// The loop for any Robot: each frame -> mapper -> controller -> robot.command, until
+/// duration_s, the end of the robot's frames, or a finished route; then writes every output.
+/// `truth` is null for real robots: the metrics that need it are then omitted.
+/// Throws RunError when the run fails.
+RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
+                             const GroundTruth* truth, const RunOptions& options);
+
+/// Removes the products of an earlier (possibly interrupted) run from `dir`, and only those:
+/// metrics.json, trajectory.csv, map*.csv, map.svg, asr_graph.json, experiment.yaml,
+/// grid_NNN.{pgm,yaml}, asrs/NNN.json and figures/*.png.
+void clear_run_outputs(const std::filesystem::path& dir);
+
+}  // namespace cogmap::experiments

@@ -1,0 +1,100 @@
+#include "cogmap/experiments/run_metrics.h"
+
+#include <nlohmann/json.hpp>
+
+namespace cogmap::experiments {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json opt(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
+
+void put_accuracy(Json& block, const MapAccuracy& a) {
+  block["wall_error_median_m"] = opt(a.wall_error_median_m);
+  block["wall_error_p90_m"] = opt(a.wall_error_p90_m);
+  block["wall_coverage"] = opt(a.wall_coverage);
+  block["spurious_fraction"] = opt(a.spurious_fraction);
+}
+
+void put_accuracy_extras(Json& block, const MapAccuracy& a) {
+  block["segment_count"] = a.segment_count;
+  block["map_length_m"] = a.map_length_m;
+  block["error_samples"] = a.error_samples;
+  block["visible_truth_samples"] = a.visible_truth_samples;
+}
+
+}  // namespace
+
+std::string metrics_json_text(const RunMetrics& m) {
+  Json j;
+  j["experiment"] = {{"name", m.name},
+                     {"world", m.world},
+                     {"seed", m.seed},
+                     {"source", m.source},
+                     {"controller", m.controller},
+                     {"grid", m.grid},
+                     {"asr_boundary", m.boundary},
+                     {"localization", m.localization_kind}};
+  j["asr_count"] = m.asr_count;
+  j["frames"] = m.frames;
+  if (m.route_completed) j["route_completed"] = *m.route_completed;
+
+  Json map = Json::object();
+  if (m.map) put_accuracy(map, *m.map);
+  map["polyline_bytes"] = m.memory.polyline_bytes;
+  map["grid_bytes"] = m.memory.grid_bytes;
+  map["compression_ratio"] = opt(m.memory.compression_ratio);
+  map["grid_bytes_total"] = m.memory.grid_bytes_total;
+  map["extracted_vertex_bytes"] = m.memory.extracted_vertex_bytes;
+  map["vertex_count"] = m.memory.vertex_count;
+  map["extracted_vertex_count"] = m.memory.extracted_vertex_count;
+  if (m.map) put_accuracy_extras(map, *m.map);
+  j["map"] = map;
+
+  if (m.map_odometry) {
+    Json before = Json::object();
+    put_accuracy(before, *m.map_odometry);
+    put_accuracy_extras(before, *m.map_odometry);
+    j["map_odometry"] = before;
+  }
+  if (m.localization) {
+    const LocalizationAccuracy& l = *m.localization;
+    j["localization"] = {
+        {"heading_error_final_deg",
+         {{"odometry", l.heading_error_final_odometry_deg},
+          {"corrected", l.heading_error_final_corrected_deg}}},
+        {"ate_rmse_m",
+         {{"odometry", l.ate_rmse_odometry_m}, {"corrected", l.ate_rmse_corrected_m}}},
+        {"frames", l.frames}};
+  }
+  j["readings"] = {{"used", m.readings_used},
+                   {"rejected",
+                    {{"not_finite", m.rejected.not_finite},
+                     {"non_positive", m.rejected.non_positive},
+                     {"beyond_max", m.rejected.beyond_max},
+                     {"unknown_sonar", m.rejected.unknown_sonar},
+                     {"total", m.rejected.total()}}}};
+  Json rooms = Json::array();
+  for (const RoomReport& r : m.rooms) {
+    rooms.push_back({{"id", r.size.id},
+                     {"parent", r.parent ? Json(*r.parent) : Json(nullptr)},
+                     {"walls", r.size.wall_count},
+                     {"vertex_count", r.size.vertex_count},
+                     {"extracted_vertex_count", r.size.extracted_vertex_count},
+                     {"polyline_bytes", r.size.polyline_bytes},
+                     {"grid_bytes", r.size.grid_bytes},
+                     {"heading_correction_deg", r.heading_correction_deg},
+                     {"start_time_s", r.start_time_s},
+                     {"end_time_s", r.end_time_s}});
+  }
+  j["rooms"] = rooms;
+  j["timing"] = {{"sim_time_s", m.sim_time_s},
+                 {"wall_time_s", m.wall_time_s},
+                 {"real_time_factor",
+                  m.wall_time_s > 0.0 ? Json(m.sim_time_s / m.wall_time_s) : Json(nullptr)},
+                 {"build_time_s", m.build_time_s},
+                 {"localization_time_s", m.localization_time_s}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace cogmap::experiments

@@ -1,0 +1,272 @@
+#include "cogmap/experiments/runner.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <regex>
+#include <system_error>
+
+#include "cogmap/experiments/atomic_file.h"
+#include "cogmap/experiments/ros_map.h"
+#include "cogmap/experiments/run_outputs.h"
+#include "cogmap/mapper/io/asr_json.h"
+#include "cogmap/mapper/io/directory_asr_store.h"
+#include "cogmap/mapper/mapper.h"
+#include "cogmap/mapper/nav/controller.h"
+#if __has_include("cogmap/render/figures.h")
+#include "cogmap/render/figures.h"
+#define COGMAP_EXPERIMENTS_HAVE_RENDER 1
+#else
+#define COGMAP_EXPERIMENTS_HAVE_RENDER 0
+#endif
+
+namespace cogmap::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+std::string room_stem(int id) {
+  char buf[16];
+  std::snprintf(buf, sizeof(buf), "%03d", id);
+  return buf;
+}
+
+std::string grid_name(mapper::GridKind kind) {
+  switch (kind) {
+    case mapper::GridKind::kHimm:
+      return "himm";
+    case mapper::GridKind::kMhimm:
+      return "mhimm";
+    case mapper::GridKind::kBayes:
+      return "bayes";
+    case mapper::GridKind::kDempsterShafer:
+      return "dempster_shafer";
+  }
+  return "?";
+}
+
+std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig& c) {
+  switch (c.type) {
+    case ControllerKind::kRoute: {
+      mapper::nav::RouteOptions o;
+      o.speed_mps = c.speed_mps;
+      o.waypoint_tolerance_m = c.waypoint_tolerance_m;
+      return mapper::nav::make_route_follower(o, c.waypoints);
+    }
+    case ControllerKind::kExplore: {
+      mapper::nav::ExploreOptions o;
+      o.speed_mps = c.speed_mps;
+      return mapper::nav::make_explorer(o);
+    }
+    case ControllerKind::kNone:
+      break;
+  }
+  return mapper::nav::make_idle_controller();
+}
+
+/// The frame loop and its products, kept apart from the writing of files.
+struct SessionResult {
+  std::vector<TrajectoryRow> rows;
+  std::optional<bool> route_completed;
+  double sim_time_s = 0.0;
+  double wall_time_s = 0.0;
+};
+
+}  // namespace
+
+void clear_run_outputs(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  static const std::regex kGrid(R"(grid_\d{3,}\.(pgm|yaml))");
+  static const std::regex kAsr(R"(\d{3,}\.json)");
+  for (const char* name :
+       {"metrics.json", "trajectory.csv", "map_segments.csv", "map_segments_odom.csv", "map.svg",
+        "asr_graph.json", "experiment.yaml"}) {
+    fs::remove(dir / name, ec);
+  }
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (std::regex_match(e.path().filename().string(), kGrid)) fs::remove(e.path(), ec);
+  }
+  for (const auto& e : fs::directory_iterator(dir / "asrs", ec)) {
+    if (std::regex_match(e.path().filename().string(), kAsr)) fs::remove(e.path(), ec);
+  }
+  for (const auto& e : fs::directory_iterator(dir / "figures", ec)) {
+    if (e.path().extension() == ".png") fs::remove(e.path(), ec);
+  }
+}
+
+RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
+                             const GroundTruth* truth, const RunOptions& options) {
+  const fs::path out = options.out_dir;
+  const bool want_figures = options.figures.value_or(experiment.figures);
+  const bool figures = want_figures && COGMAP_EXPERIMENTS_HAVE_RENDER;
+  try {
+    clear_run_outputs(out);
+    write_file_atomic(out / "experiment.yaml", experiment.resolved_yaml);
+  } catch (const std::exception& e) {
+    throw RunError(std::string("cannot prepare the run directory: ") + e.what());
+  }
+  if (want_figures && !figures) {
+    std::fprintf(stderr, "cogmap: built without the render module; figures are skipped\n");
+  }
+
+  const mapper::RobotGeometry geometry = robot.geometry();
+  const mapper::Pose2 start = truth ? truth->start_pose : options.start_pose;
+  mapper::io::DirectoryAsrStore store(out / "asrs");
+  mapper::Mapper mapper(experiment.mapper, geometry, store, start);
+  const double occupied_threshold = experiment.mapper.builder.occupied_threshold;
+  Clock::duration figure_time{0};
+  mapper.set_room_listener([&](const mapper::Asr& asr, const mapper::AsrTrace& trace) {
+    const std::string stem = room_stem(asr.id);
+    write_ros_map(trace.raw, occupied_threshold, out, "grid_" + stem);
+#if COGMAP_EXPERIMENTS_HAVE_RENDER
+    if (figures) {
+      const auto t0 = Clock::now();
+      render::write_room_stages_figure(trace, experiment.name + ": room " + std::to_string(asr.id),
+                                       out / "figures" / ("room_" + stem + "_stages.png"));
+      figure_time += Clock::now() - t0;
+    }
+#endif
+  });
+
+  auto controller = make_controller(experiment.controller);
+  SessionResult session;
+  const auto wall_start = Clock::now();
+  try {
+    double next_progress_s = 0.0;
+    while (true) {
+      const std::optional<mapper::SensorFrame> frame = robot.next_frame();
+      if (!frame) break;
+      mapper.process(*frame);
+      session.rows.push_back(
+          {frame->time_s, frame->true_pose, mapper.odometry_pose(), mapper.pose_estimate()});
+      session.sim_time_s = frame->time_s;
+      if (options.on_progress && frame->time_s >= next_progress_s) {
+        options.on_progress(frame->time_s, experiment.duration_s);
+        next_progress_s = std::floor(frame->time_s) + 1.0;
+      }
+      if (frame->time_s >= experiment.duration_s) break;
+      if (experiment.controller.type == ControllerKind::kRoute && controller->done()) break;
+      const mapper::nav::NavInput input{&*frame, mapper.pose_estimate(), &mapper.grid(), &geometry};
+      robot.command(controller->step(input));
+    }
+    robot.stop();
+    mapper.finish();
+  } catch (const std::exception& e) {
+    try {
+      robot.stop();
+    } catch (...) {
+      // Already failing; the original error is the one to report.
+    }
+    throw RunError(std::string("run failed at t = ") + std::to_string(session.sim_time_s) +
+                   " s: " + e.what());
+  }
+  session.wall_time_s = seconds(Clock::now() - wall_start - figure_time);
+  if (experiment.controller.type == ControllerKind::kRoute) {
+    session.route_completed = controller->done();
+  }
+
+  RunSummary summary;
+  summary.out_dir = out;
+  RunMetrics& m = summary.metrics;
+  m.name = experiment.name;
+  m.world = experiment.world.filename().string();
+  m.seed = experiment.seed;
+  m.source = std::string(to_string(experiment.robot_source));
+  m.controller = std::string(to_string(experiment.controller.type));
+  m.grid = grid_name(experiment.mapper.grid);
+  m.boundary =
+      experiment.mapper.boundary == mapper::BoundaryKind::kDoorway ? "doorway" : "distance";
+  m.localization_kind =
+      experiment.mapper.localization == mapper::LocalizationKind::kEm ? "em" : "none";
+  m.frames = session.rows.size();
+  m.route_completed = session.route_completed;
+  m.sim_time_s = session.sim_time_s;
+  m.wall_time_s = session.wall_time_s;
+  const mapper::MapperStats& stats = mapper.stats();
+  m.readings_used = stats.readings_used;
+  m.rejected = stats.rejected;
+  m.build_time_s = stats.build_time_s;
+  m.localization_time_s = stats.localization_time_s;
+
+  try {
+    const auto corrected = mapper.master_map(true);
+    const auto odometry = mapper.master_map(false);
+    std::vector<RoomSize> sizes;
+    std::vector<std::pair<int, mapper::Point2>> labels;
+    for (const int id : store.ids()) {
+      const mapper::Asr asr = store.load(id);  // one room at a time: memory stays bounded
+      RoomReport r;
+      r.size = {asr.id,
+                asr.walls.size(),
+                asr.vertex_count(),
+                asr.extracted_vertex_count,
+                asr.polyline_bytes(),
+                asr.grid_bytes};
+      r.parent = asr.parent;
+      r.heading_correction_deg = asr.heading_correction_rad * kDegPerRad;
+      r.start_time_s = asr.start_time_s;
+      r.end_time_s = asr.end_time_s;
+      sizes.push_back(r.size);
+      m.rooms.push_back(r);
+      labels.emplace_back(asr.id, asr.pose.transform(asr.reference_point));
+    }
+    m.asr_count = m.rooms.size();
+    m.memory = memory_metrics(sizes);
+
+    std::vector<mapper::Point2> true_path, est_path, odom_path;
+    for (const TrajectoryRow& r : session.rows) {
+      if (r.truth) true_path.push_back(r.truth->translation());
+      est_path.push_back(r.estimate.translation());
+      odom_path.push_back(r.odometry.translation());
+    }
+    if (truth) {
+      MapMetricsOptions mo;
+      mo.sonar_max_range_m = geometry.sonar_max_range_m;
+      const auto visible = visible_truth_samples(truth->surfaces, true_path, mo);
+      m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, mo);
+      m.map_odometry = evaluate_map(segments_of(odometry), truth->surfaces, visible, mo);
+      m.localization = evaluate_trajectory(session.rows);
+    }
+
+    write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows));
+    write_file_atomic(out / "map_segments.csv", segments_csv(corrected));
+    write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry));
+    mapper::io::write_asr_graph_json(mapper.graph(), out / "asr_graph.json");
+    SvgMap svg{corrected, truth ? truth->surfaces : std::vector<mapper::Segment>{},
+               subsample_path(est_path, 0.05), labels};
+    write_file_atomic(out / "map.svg", map_svg(svg));
+
+#if COGMAP_EXPERIMENTS_HAVE_RENDER
+    if (figures) {
+      render::MapFigure fig;
+      fig.title = experiment.name + " (seed " + std::to_string(experiment.seed) + ")";
+      if (truth) fig.true_surfaces = truth->surfaces;
+      fig.map_odometry = segments_of(odometry);
+      fig.map_corrected = segments_of(corrected);
+      fig.true_path = subsample_path(true_path, 0.05);
+      fig.odometry_path = subsample_path(odom_path, 0.05);
+      fig.estimated_path = subsample_path(est_path, 0.05);
+      for (const auto& [id, p] : labels) {
+        fig.room_labels_at.push_back(p);
+        fig.room_labels.push_back(std::to_string(id));
+      }
+      render::write_map_figure(fig, out / "figures" / "map_before_after.png");
+      render::write_graph_figure(mapper.graph(), experiment.name + ": room graph",
+                                 out / "figures" / "graph.png");
+    }
+#endif
+    // Last: its presence marks the run as finished (sweeps skip finished runs).
+    write_file_atomic(out / "metrics.json", metrics_json_text(m));
+  } catch (const std::exception& e) {
+    throw RunError(std::string("writing the results failed: ") + e.what());
+  }
+  return summary;
+}
+
+}  // namespace cogmap::experiments

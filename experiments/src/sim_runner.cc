@@ -1,0 +1,49 @@
+// run_experiment: the simulator side of the runner (world + SimRobot), kept apart from the
+// robot-agnostic loop in runner.cc.
+#include <memory>
+#include <stdexcept>
+
+#include "cogmap/experiments/runner.h"
+#include "cogmap/sim/sim_robot.h"
+#include "cogmap/sim/world_geometry.h"
+#include "cogmap/sim/world_spec.h"
+
+namespace cogmap::experiments {
+namespace {
+
+// An absent `robot` block means every sim default.
+yaml::Node robot_block_of(const Experiment& experiment) {
+  return experiment.robot ? *experiment.robot
+                          : yaml::Node::load_string("{}", experiment.file.string());
+}
+
+}  // namespace
+
+void validate_experiment(const Experiment& experiment) {
+  if (experiment.robot_source != RobotSource::kSim) return;  // the hw module checks its own
+  (void)sim::load_world(experiment.world);
+  (void)sim::parse_sim_robot_options(robot_block_of(experiment));
+}
+
+RunSummary run_experiment(const Experiment& experiment, const RunOptions& options) {
+  const yaml::Node robot_block = robot_block_of(experiment);
+  if (experiment.robot_source != RobotSource::kSim) {
+    const auto src = robot_block.child("source");
+    throw yaml::ConfigError(experiment.file.string(), src ? src->line() : robot_block.line(),
+                            "robot.source",
+                            "'cogmap run' simulates; use 'cogmap drive' or 'cogmap replay' for '" +
+                                std::string(to_string(experiment.robot_source)) + "'");
+  }
+  const sim::WorldSpec world = sim::load_world(experiment.world);
+  const sim::SimRobotOptions robot_options = sim::parse_sim_robot_options(robot_block);
+  std::unique_ptr<sim::SimRobot> robot;
+  try {
+    robot = std::make_unique<sim::SimRobot>(world, robot_options, experiment.seed);
+  } catch (const std::invalid_argument& e) {
+    throw yaml::ConfigError(experiment.file.string(), robot_block.line(), "robot", e.what());
+  }
+  const GroundTruth truth{sim::true_surfaces(world), world.start};
+  return run_robot_session(*robot, experiment, &truth, options);
+}
+
+}  // namespace cogmap::experiments
