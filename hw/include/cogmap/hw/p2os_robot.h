@@ -1,0 +1,120 @@
+#pragma once
+/// A Pioneer P2-AT over the P2OS protocol, behind the mapper's seam. One background thread
+/// owns the byte stream: it handshakes, decodes SIPs into frames, sends the motion command and
+/// the keep-alive, and reconnects after silence or a controller reset. Nothing else touches the
+/// stream, so commands never race with the keep-alive.
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "cogmap/hw/byte_stream.h"
+#include "cogmap/hw/odometry_unwrap.h"
+#include "cogmap/hw/p2os_packet.h"
+#include "cogmap/hw/p2os_sip.h"
+#include "cogmap/mapper/seam/robot.h"
+
+namespace cogmap::hw {
+
+/// Where SensorFrame::time_s comes from.
+enum class FrameClock {
+  kHost,      ///< host steady clock, seconds since the connection (real robots)
+  kSipCount,  ///< sip_period_s per SIP received (a server running faster than real time)
+};
+
+struct P2osRobotOptions {
+  std::chrono::milliseconds sync_reply_timeout{500};   ///< wait per SYNC echo
+  int sync_attempts = 8;                               ///< SYNC0-2 rounds before giving up
+  std::chrono::milliseconds keepalive_period{200};     ///< < 0.5 s (watchdog ~2 s, P2AT.md)
+  std::chrono::milliseconds silence_timeout{2000};     ///< no SIP this long: reconnect
+  std::chrono::milliseconds reconnect_give_up{30000};  ///< reconnecting longer: disconnected
+  std::chrono::milliseconds frame_wait{30000};         ///< next_frame() waits at most this
+  FrameClock clock = FrameClock::kHost;
+  double sip_period_s = 0.1;            ///< for FrameClock::kSipCount
+  std::size_t max_queued_frames = 600;  ///< oldest dropped beyond this (a minute of SIPs)
+  /// Progress and warnings ("connected to ...", "reconnecting ..."); may be empty.
+  std::function<void(const std::string&)> log;
+};
+
+/// Connection counters, for the run report and tests.
+struct P2osStats {
+  std::uint64_t sips = 0;            ///< SIPs decoded
+  std::uint64_t bad_sips = 0;        ///< valid checksum but undecodable
+  std::uint64_t dropped_bytes = 0;   ///< discarded by the packet decoder
+  std::uint64_t dropped_frames = 0;  ///< frames discarded because the queue was full
+  std::uint64_t unknown_sonars = 0;  ///< sonar numbers beyond the geometry
+  int connections = 0;               ///< successful handshakes (1 + reconnections)
+  int left_open_recoveries = 0;      ///< SIPs seen during sync, CLOSE sent
+  int resets = 0;                    ///< 0xFF reset packets received
+};
+
+class P2osRobot final : public mapper::Robot {
+ public:
+  /// Handshakes over `stream` (SYNC0-2, OPEN, ENABLE 1, SONAR 1) and starts the I/O thread.
+  /// Throws StreamError when the robot does not answer or names a subclass other than p2at,
+  /// p2at8 or p2at8+ (the message names the device and what was received).
+  P2osRobot(std::unique_ptr<ByteStream> stream, P2osRobotOptions options = {});
+  /// Shuts down cleanly (SONAR 0, STOP, CLOSE) if not done already.
+  ~P2osRobot() override;
+  P2osRobot(const P2osRobot&) = delete;
+  P2osRobot& operator=(const P2osRobot&) = delete;
+
+  const mapper::RobotGeometry& geometry() const override { return geometry_; }
+  /// The next SIP as a frame; waits at most options.frame_wait. Empty once the connection is
+  /// lost for good (reconnection gave up, stream closed) or after shutdown().
+  std::optional<mapper::SensorFrame> next_frame() override;
+  /// VEL (mm/s) and RVEL (deg/s), clamped to the geometry's limits; resent as keep-alive.
+  void command(const mapper::VelocityCommand& cmd) override;
+  void stop() override;
+
+  /// Sends SONAR 0, STOP, CLOSE and stops the I/O thread; idempotent.
+  void shutdown();
+
+  /// What the robot said in SYNC2.
+  p2os::RobotIdentity identity() const;
+  P2osStats stats() const;
+  /// Why the connection ended (empty while connected).
+  std::string failure() const;
+
+ private:
+  void io_loop();
+  bool handshake();  // on the I/O thread (or the constructor before it starts)
+  void send(const std::vector<std::uint8_t>& packet);
+  std::optional<p2os::Packet> read_packet(std::chrono::milliseconds timeout);
+  void handle_sip(const p2os::Packet& packet);
+  void send_motion();
+  void log(const std::string& message) const;
+
+  std::unique_ptr<ByteStream> stream_;
+  P2osRobotOptions options_;
+  mapper::RobotGeometry geometry_;
+  p2os::PacketDecoder decoder_;
+  OdometryUnwrapper odometry_;
+  p2os::ConversionFactors factors_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_sip_;
+  std::chrono::steady_clock::time_point last_sent_;
+  std::uint64_t sip_count_ = 0;
+
+  mutable std::mutex mutex_;  // guards everything below
+  std::condition_variable cv_;
+  std::deque<mapper::SensorFrame> frames_;
+  mapper::VelocityCommand motion_;
+  bool motion_dirty_ = false;
+  bool stopping_ = false;
+  bool finished_ = false;
+  std::string failure_;
+  p2os::RobotIdentity identity_;
+  P2osStats stats_;
+  std::thread thread_;
+};
+
+}  // namespace cogmap::hw

@@ -1,0 +1,89 @@
+#pragma once
+/// The robot side of P2OS, for `cogmap serve` and tests: it answers SYNC0-2 as a P2-AT,
+/// obeys OPEN/CLOSE/ENABLE/SONAR/VEL/RVEL/VEL2/STOP/E_STOP, and streams a SIP every cycle
+/// built from the frames of the mapper::Robot it drives (the simulator, or a test model).
+/// hw does not depend on the simulator: the caller hands in any Robot.
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "cogmap/hw/byte_stream.h"
+#include "cogmap/hw/p2os_packet.h"
+#include "cogmap/hw/p2os_sip.h"
+#include "cogmap/mapper/seam/robot.h"
+
+namespace cogmap::hw {
+
+struct P2osServerOptions {
+  p2os::RobotIdentity identity{"cogmap-sim", "Pioneer", "p2at"};
+  /// Wall-clock time between SIPs; each SIP advances the body one next_frame() (whose own
+  /// cycle is 100 ms of simulated time). Smaller values run faster than real time.
+  std::chrono::milliseconds cycle{100};
+  /// The robot stops when no command arrives for this long while open (P2OS watchdog).
+  std::chrono::milliseconds watchdog{2000};
+  /// Track width used to turn VEL2 wheel speeds into a turn rate, metres.
+  double vel2_track_m = 0.394;
+  /// Position counters at power-up: a controller left running holds any value (tests use
+  /// values near 0x7FFF to exercise the wrap).
+  std::uint16_t initial_x_count = 0;
+  std::uint16_t initial_y_count = 0;
+  /// Progress messages ("client synced", "watchdog stop"); may be empty.
+  std::function<void(const std::string&)> log;
+};
+
+/// Counters, for tests.
+struct P2osServerStats {
+  std::uint64_t sips_sent = 0;
+  std::uint64_t commands = 0;  ///< valid client packets after sync
+  std::uint64_t watchdog_stops = 0;
+  std::uint64_t syncs = 0;      ///< completed handshakes
+  std::uint64_t bad_bytes = 0;  ///< discarded by the decoder
+};
+
+class P2osServer {
+ public:
+  /// `stream` is the robot's end of the link; `body` moves and senses. Neither is owned.
+  P2osServer(ByteStream& stream, mapper::Robot& body, P2osServerOptions options = {});
+
+  /// Serves until `stop` becomes true, the body ends (next_frame() empty) or the client hangs
+  /// up (StreamClosed, returned normally). Other stream errors propagate.
+  void run(const std::atomic<bool>& stop);
+
+  /// Thread-safe: makes the server send a controller reset packet (0xFF) at the next cycle,
+  /// forget the sync and restart its position counters at zero (as a real controller does).
+  void request_reset() { reset_requested_ = true; }
+
+  /// Counters so far (read after run() returns, or racy-but-harmless while running).
+  P2osServerStats stats() const { return stats_; }
+
+ private:
+  void handle(const p2os::Packet& packet);
+  void step_and_send_sip();
+  void set_motion(double v_mps, double w_radps);
+
+  ByteStream& stream_;
+  mapper::Robot& body_;
+  P2osServerOptions options_;
+  p2os::ConversionFactors factors_;
+  p2os::PacketDecoder decoder_;
+  int sync_step_ = 0;  // next SYNC expected; 3 = synced
+  bool open_ = false;
+  bool motors_ = false;
+  bool sonar_on_ = true;
+  double v_mps_ = 0.0, w_radps_ = 0.0;
+  std::chrono::steady_clock::time_point last_command_;
+  mapper::Pose2 origin_;  // body odometry at the last reset: the counters' zero
+  mapper::Pose2 last_odometry_;
+  bool have_odometry_ = false;
+  std::atomic<bool> reset_requested_{false};
+  P2osServerStats stats_;
+};
+
+/// Decodes an integer command argument (0x3B / 0x1B and two bytes); empty when absent.
+std::optional<int> command_int_argument(const p2os::Packet& packet);
+
+}  // namespace cogmap::hw

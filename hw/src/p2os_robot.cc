@@ -1,0 +1,318 @@
+// P2osRobot: handshake, SIP -> SensorFrame, keep-alive, reconnection, clean shutdown.
+#include "cogmap/hw/p2os_robot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cogmap::hw {
+
+using Clock = std::chrono::steady_clock;
+using std::chrono::milliseconds;
+
+namespace {
+constexpr milliseconds kReadSlice{20};  // I/O loop granularity: command latency bound
+}  // namespace
+
+P2osRobot::P2osRobot(std::unique_ptr<ByteStream> stream, P2osRobotOptions options)
+    : stream_(std::move(stream)), options_(std::move(options)), geometry_(mapper::p2at_geometry()) {
+  start_ = Clock::now();
+  if (!handshake()) {
+    throw StreamError(stream_->name() + ": P2OS handshake failed: " + failure_);
+  }
+  thread_ = std::thread([this] { io_loop(); });
+}
+
+P2osRobot::~P2osRobot() { shutdown(); }
+
+void P2osRobot::log(const std::string& message) const {
+  if (options_.log) options_.log(message);
+}
+
+void P2osRobot::send(const std::vector<std::uint8_t>& packet) {
+  stream_->write(packet);
+  last_sent_ = Clock::now();
+}
+
+std::optional<p2os::Packet> P2osRobot::read_packet(milliseconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  std::uint8_t buf[256];
+  for (;;) {
+    if (auto p = decoder_.next()) return p;
+    const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now());
+    if (left.count() <= 0) return std::nullopt;
+    const std::size_t n = stream_->read(buf, left);
+    if (n == 0) return std::nullopt;
+    decoder_.feed({buf, n});
+  }
+}
+
+bool P2osRobot::handshake() {
+  using p2os::Command;
+  decoder_.clear();
+  for (int attempt = 0; attempt < options_.sync_attempts; ++attempt) {
+    {
+      std::lock_guard lock(mutex_);
+      if (stopping_) break;
+    }
+    int step = 0;
+    send(p2os::encode_command(Command::kSync0));
+    bool restart = false;
+    while (step < 3 && !restart) {
+      const auto packet = read_packet(options_.sync_reply_timeout);
+      if (!packet) {
+        restart = true;  // no echo: start again from SYNC0
+        break;
+      }
+      const std::uint8_t type = packet->type();
+      if (p2os::is_sip(type)) {
+        // The robot was left open by an earlier client: close it and sync from scratch.
+        log(stream_->name() + ": SIP during sync, robot was left open: sending CLOSE");
+        send(p2os::encode_command(Command::kClose));
+        {
+          std::lock_guard lock(mutex_);
+          ++stats_.left_open_recoveries;
+        }
+        // Discard what is still in flight so a stale SIP does not trigger another CLOSE.
+        const auto drain_until = Clock::now() + milliseconds(300);
+        while (Clock::now() < drain_until) read_packet(milliseconds(50));
+        decoder_.clear();
+        restart = true;
+        break;
+      }
+      if (type != step) continue;  // a stale echo of an earlier round
+      if (step == 2) {
+        try {
+          const p2os::RobotIdentity id = p2os::decode_sync2(packet->body);
+          const auto factors = p2os::conversion_for_subclass(id.subclass);
+          if (!factors) {
+            std::lock_guard lock(mutex_);
+            failure_ = "robot '" + id.name + "' is a " + id.klass + " '" + id.subclass +
+                       "', not a p2at, p2at8 or p2at8+";
+            return false;
+          }
+          factors_ = *factors;
+          odometry_.set_factors(factors_);
+          std::lock_guard lock(mutex_);
+          identity_ = id;
+        } catch (const p2os::DecodeError& e) {
+          log(stream_->name() + ": bad SYNC2 reply: " + e.what());
+          restart = true;
+          break;
+        }
+      }
+      ++step;
+      if (step < 3) send(p2os::encode_command(static_cast<Command>(step)));
+    }
+    if (step == 3) {
+      send(p2os::encode_command(Command::kOpen));
+      send(p2os::encode_command(Command::kEnable, 1));
+      send(p2os::encode_command(Command::kSonar, 1));
+      last_sip_ = Clock::now();
+      std::lock_guard lock(mutex_);
+      ++stats_.connections;
+      motion_dirty_ = true;  // resend the motion in force before the reconnection
+      log(stream_->name() + ": connected to " + identity_.name + " (" + identity_.klass + " " +
+          identity_.subclass + ")");
+      return true;
+    }
+  }
+  std::lock_guard lock(mutex_);
+  failure_ = "no SYNC reply after " + std::to_string(options_.sync_attempts) + " attempts";
+  return false;
+}
+
+void P2osRobot::handle_sip(const p2os::Packet& packet) {
+  p2os::Sip sip;
+  try {
+    sip = p2os::decode_sip(packet.body);
+  } catch (const p2os::DecodeError& e) {
+    std::lock_guard lock(mutex_);
+    ++stats_.bad_sips;
+    log(stream_->name() + ": SIP at stream offset " + std::to_string(packet.offset) + ": " +
+        e.what());
+    return;
+  }
+  last_sip_ = Clock::now();
+  ++sip_count_;
+  mapper::SensorFrame frame;
+  frame.time_s = options_.clock == FrameClock::kHost
+                     ? std::chrono::duration<double>(last_sip_ - start_).count()
+                     : static_cast<double>(sip_count_) * options_.sip_period_s;
+  frame.odometry = odometry_.update(sip.x_pos, sip.y_pos, sip.th_pos);
+  frame.stall_left = sip.left_stalled();
+  frame.stall_right = sip.right_stalled();
+  std::uint64_t unknown = 0;
+  for (const p2os::SipSonar& s : sip.sonars) {
+    if (s.number >= geometry_.sonars.size()) {
+      ++unknown;
+      continue;
+    }
+    mapper::SonarReading r;
+    r.index = s.number;
+    r.range_m = s.range * factors_.sonar_mm_per_unit / 1000.0;
+    r.echo = r.range_m < geometry_.sonar_max_range_m;
+    if (!r.echo) r.range_m = geometry_.sonar_max_range_m;
+    r.time_s = frame.time_s;
+    frame.sonar.push_back(r);
+  }
+  std::lock_guard lock(mutex_);
+  ++stats_.sips;
+  stats_.unknown_sonars += unknown;
+  frames_.push_back(std::move(frame));
+  if (frames_.size() > options_.max_queued_frames) {
+    frames_.pop_front();
+    ++stats_.dropped_frames;
+  }
+  cv_.notify_all();
+}
+
+void P2osRobot::send_motion() {
+  mapper::VelocityCommand m;
+  {
+    std::lock_guard lock(mutex_);
+    m = motion_;
+    motion_dirty_ = false;
+  }
+  if (m.v_mps == 0.0 && m.w_radps == 0.0) {
+    // Stopped: STOP is explicit; PULSE alone would keep a stale velocity.
+    send(p2os::encode_command(p2os::Command::kVel, 0));
+    send(p2os::encode_command(p2os::Command::kRVel, 0));
+    return;
+  }
+  const int vel_mmps = static_cast<int>(std::lround(m.v_mps * 1000.0));
+  const int rvel_degps = static_cast<int>(std::lround(m.w_radps * 180.0 / std::numbers::pi));
+  send(p2os::encode_command(p2os::Command::kVel, vel_mmps));
+  send(p2os::encode_command(p2os::Command::kRVel, rvel_degps));
+}
+
+void P2osRobot::io_loop() {
+  std::uint8_t buf[512];
+  Clock::time_point reconnect_since{};
+  bool reconnecting = false;
+  bool after_reset = false;
+  try {
+    for (;;) {
+      {
+        std::lock_guard lock(mutex_);
+        if (stopping_) break;
+      }
+      if (reconnecting) {
+        if (handshake()) {
+          reconnecting = false;
+          if (after_reset) {
+            odometry_.rebase();  // a reset controller restarts its counters at zero
+          } else {
+            const double gap_s = std::chrono::duration<double>(Clock::now() - reconnect_since +
+                                                               options_.silence_timeout)
+                                     .count();
+            odometry_.rebase_if_implausible(geometry_.max_speed_mps * (gap_s + 5.0));
+          }
+          after_reset = false;
+          {
+            std::lock_guard lock(mutex_);
+            failure_.clear();
+          }
+        } else if (Clock::now() - reconnect_since > options_.reconnect_give_up) {
+          std::lock_guard lock(mutex_);
+          failure_ = "reconnection gave up: " + failure_;
+          break;
+        }
+        continue;
+      }
+      const std::size_t n = stream_->read(buf, kReadSlice);
+      if (n > 0) decoder_.feed({buf, n});
+      while (auto packet = decoder_.next()) {
+        if (p2os::is_sip(packet->type())) {
+          handle_sip(*packet);
+        } else if (packet->type() == p2os::kResetPacket) {
+          log(stream_->name() + ": controller reset at stream offset " +
+              std::to_string(packet->offset) + ": reconnecting");
+          std::lock_guard lock(mutex_);
+          ++stats_.resets;
+          reconnecting = true;
+          after_reset = true;
+        }
+      }
+      {
+        std::lock_guard lock(mutex_);
+        stats_.dropped_bytes = decoder_.dropped_bytes();
+      }
+      if (!reconnecting && Clock::now() - last_sip_ > options_.silence_timeout) {
+        log(stream_->name() + ": no SIP for " + std::to_string(options_.silence_timeout.count()) +
+            " ms: reconnecting");
+        reconnecting = true;
+      }
+      if (reconnecting) {
+        reconnect_since = Clock::now();
+        continue;
+      }
+      bool dirty;
+      {
+        std::lock_guard lock(mutex_);
+        dirty = motion_dirty_;
+      }
+      if (dirty || Clock::now() - last_sent_ >= options_.keepalive_period) send_motion();
+    }
+    // Clean shutdown, best effort: the robot may already be gone.
+    if (!reconnecting) {
+      send(p2os::encode_command(p2os::Command::kSonar, 0));
+      send(p2os::encode_command(p2os::Command::kStop));
+      send(p2os::encode_command(p2os::Command::kClose));
+    }
+  } catch (const StreamError& e) {
+    std::lock_guard lock(mutex_);
+    failure_ = e.what();
+  }
+  std::lock_guard lock(mutex_);
+  finished_ = true;
+  if (failure_.empty() && !stopping_) failure_ = "connection ended";
+  cv_.notify_all();
+}
+
+std::optional<mapper::SensorFrame> P2osRobot::next_frame() {
+  std::unique_lock lock(mutex_);
+  cv_.wait_for(lock, options_.frame_wait, [&] { return !frames_.empty() || finished_; });
+  if (frames_.empty()) return std::nullopt;
+  mapper::SensorFrame f = std::move(frames_.front());
+  frames_.pop_front();
+  return f;
+}
+
+void P2osRobot::command(const mapper::VelocityCommand& cmd) {
+  std::lock_guard lock(mutex_);
+  motion_.v_mps = std::clamp(cmd.v_mps, -geometry_.max_speed_mps, geometry_.max_speed_mps);
+  motion_.w_radps =
+      std::clamp(cmd.w_radps, -geometry_.max_turn_rate_radps, geometry_.max_turn_rate_radps);
+  motion_dirty_ = true;
+}
+
+void P2osRobot::stop() { command({}); }
+
+void P2osRobot::shutdown() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    cv_.notify_all();
+  }
+  if (thread_.joinable()) thread_.join();
+  std::lock_guard lock(mutex_);
+  finished_ = true;
+}
+
+p2os::RobotIdentity P2osRobot::identity() const {
+  std::lock_guard lock(mutex_);
+  return identity_;
+}
+
+P2osStats P2osRobot::stats() const {
+  std::lock_guard lock(mutex_);
+  return stats_;
+}
+
+std::string P2osRobot::failure() const {
+  std::lock_guard lock(mutex_);
+  return failure_;
+}
+
+}  // namespace cogmap::hw

@@ -1,0 +1,194 @@
+// Robot side of P2OS: sync state machine, command handling, SIP streaming and watchdog.
+#include "cogmap/hw/p2os_server.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <thread>
+
+namespace cogmap::hw {
+
+using Clock = std::chrono::steady_clock;
+using std::chrono::milliseconds;
+
+std::optional<int> command_int_argument(const p2os::Packet& packet) {
+  const auto& b = packet.body;
+  if (b.size() < 4) return std::nullopt;
+  const int magnitude = b[2] | (b[3] << 8);
+  if (b[1] == p2os::kArgPositive) return magnitude;
+  if (b[1] == p2os::kArgNegative) return -magnitude;
+  return std::nullopt;
+}
+
+P2osServer::P2osServer(ByteStream& stream, mapper::Robot& body, P2osServerOptions options)
+    : stream_(stream), body_(body), options_(std::move(options)) {
+  factors_ =
+      p2os::conversion_for_subclass(options_.identity.subclass).value_or(p2os::ConversionFactors{});
+}
+
+void P2osServer::set_motion(double v_mps, double w_radps) {
+  v_mps_ = v_mps;
+  w_radps_ = w_radps;
+  body_.command({v_mps_, w_radps_});
+}
+
+void P2osServer::handle(const p2os::Packet& packet) {
+  using p2os::Command;
+  const std::uint8_t cmd = packet.type();
+  if (!open_) {
+    // Sync state machine: each SYNC is echoed in order; anything else restarts it.
+    if (sync_step_ < 3 && cmd == sync_step_ && packet.body.size() == 1) {
+      if (cmd == 2) {
+        const auto body = p2os::encode_sync2(options_.identity);
+        stream_.write(p2os::frame(body));
+      } else {
+        stream_.write(p2os::encode_command(static_cast<Command>(cmd)));
+      }
+      ++sync_step_;
+      if (sync_step_ == 3) ++stats_.syncs;
+      return;
+    }
+    if (sync_step_ == 3 && cmd == static_cast<std::uint8_t>(Command::kOpen)) {
+      open_ = true;
+      motors_ = false;
+      sonar_on_ = true;
+      last_command_ = Clock::now();
+      if (options_.log) options_.log("client connected: robot open");
+      return;
+    }
+    sync_step_ = cmd == 0 && packet.body.size() == 1 ? 0 : sync_step_;
+    if (cmd == 0 && packet.body.size() == 1) {
+      // A fresh SYNC0 restarts the handshake (the client gave up on a previous round).
+      stream_.write(p2os::encode_command(Command::kSync0));
+      sync_step_ = 1;
+    }
+    return;
+  }
+  ++stats_.commands;
+  last_command_ = Clock::now();
+  const std::optional<int> arg = command_int_argument(packet);
+  switch (static_cast<Command>(cmd)) {
+    case Command::kClose:
+      open_ = false;
+      sync_step_ = 0;
+      set_motion(0.0, 0.0);
+      if (options_.log) options_.log("client closed");
+      break;
+    case Command::kEnable:
+      motors_ = arg.value_or(0) != 0;
+      if (!motors_) set_motion(0.0, 0.0);
+      break;
+    case Command::kSonar:
+      sonar_on_ = arg.value_or(0) != 0;
+      break;
+    case Command::kVel:
+      if (motors_ && arg) set_motion(*arg * factors_.velocity_mmps_per_unit / 1000.0, w_radps_);
+      break;
+    case Command::kRVel:
+      if (motors_ && arg) set_motion(v_mps_, *arg * std::numbers::pi / 180.0);
+      break;
+    case Command::kVel2:
+      if (motors_ && arg) {
+        // Left wheel in the high byte, right in the low, each signed x 20 mm/s.
+        const auto bits = static_cast<std::uint16_t>(*arg);
+        const double left_mps = static_cast<std::int8_t>(bits >> 8) * 0.020;
+        const double right_mps = static_cast<std::int8_t>(bits & 0xFF) * 0.020;
+        set_motion((left_mps + right_mps) / 2.0, (right_mps - left_mps) / options_.vel2_track_m);
+      }
+      break;
+    case Command::kStop:
+    case Command::kEStop:
+      set_motion(0.0, 0.0);
+      break;
+    default:
+      break;  // PULSE and commands this model does not implement: watchdog only
+  }
+}
+
+void P2osServer::step_and_send_sip() {
+  const std::optional<mapper::SensorFrame> frame = body_.next_frame();
+  if (!frame) return;
+  if (!have_odometry_) {
+    origin_ = frame->odometry;  // counters start at zero where the robot powers up
+    have_odometry_ = true;
+  }
+  last_odometry_ = frame->odometry;
+  if (!open_) return;
+  const mapper::Pose2 rel = origin_.inverse().compose(frame->odometry);
+  p2os::Sip sip;
+  sip.moving = v_mps_ != 0.0 || w_radps_ != 0.0;
+  const auto wrap15 = [](double units) {
+    return static_cast<std::uint16_t>(static_cast<std::int64_t>(std::llround(units)) & 0x7FFF);
+  };
+  sip.x_pos = wrap15(options_.initial_x_count + rel.x_m * 1000.0 / factors_.distance_mm_per_unit);
+  sip.y_pos = wrap15(options_.initial_y_count + rel.y_m * 1000.0 / factors_.distance_mm_per_unit);
+  sip.th_pos =
+      static_cast<std::int16_t>(std::llround(rel.theta_rad / factors_.angle_rad_per_unit) & 0xFFF);
+  const double half_track_m = options_.vel2_track_m / 2.0;
+  sip.l_vel = static_cast<std::int16_t>(std::lround((v_mps_ - w_radps_ * half_track_m) * 1000.0));
+  sip.r_vel = static_cast<std::int16_t>(std::lround((v_mps_ + w_radps_ * half_track_m) * 1000.0));
+  sip.battery = 130;
+  sip.stall_left = frame->stall_left ? 1 : 0;
+  sip.stall_right = frame->stall_right ? 1 : 0;
+  sip.flags = static_cast<std::uint16_t>((motors_ ? 1 : 0) | (sonar_on_ ? 0x1E : 0));
+  if (sonar_on_) {
+    const double max_m = body_.geometry().sonar_max_range_m;
+    // No echo: a raw range that converts back to at least the maximum.
+    const auto no_echo_raw = static_cast<std::uint16_t>(
+        std::min(65535.0, std::ceil(max_m * 1000.0 / factors_.sonar_mm_per_unit) + 1));
+    for (const mapper::SonarReading& r : frame->sonar) {
+      if (r.index < 0 || r.index > 255) continue;
+      const double raw = r.range_m * 1000.0 / factors_.sonar_mm_per_unit;
+      sip.sonars.push_back(
+          {static_cast<std::uint8_t>(r.index),
+           r.echo ? static_cast<std::uint16_t>(std::clamp(std::round(raw), 0.0, 65535.0))
+                  : no_echo_raw});
+    }
+  }
+  sip.battery_x10 = 130;
+  sip.charge_state = 0;
+  sip.rot_vel = static_cast<std::int16_t>(std::lround(w_radps_ * 1800.0 / std::numbers::pi));
+  stream_.write(p2os::frame(p2os::encode_sip(sip)));
+  ++stats_.sips_sent;
+}
+
+void P2osServer::run(const std::atomic<bool>& stop) {
+  std::uint8_t buf[512];
+  auto next_cycle = Clock::now() + options_.cycle;
+  try {
+    while (!stop) {
+      const auto now = Clock::now();
+      if (now >= next_cycle) {
+        next_cycle += options_.cycle;
+        if (next_cycle < now) next_cycle = now + options_.cycle;  // fell behind: do not burst
+        if (reset_requested_.exchange(false)) {
+          stream_.write(p2os::frame(std::vector<std::uint8_t>{p2os::kResetPacket}));
+          open_ = false;
+          sync_step_ = 0;
+          set_motion(0.0, 0.0);
+          origin_ = last_odometry_;  // the controller's counters restart at zero
+          options_.initial_x_count = 0;
+          options_.initial_y_count = 0;
+        }
+        if (open_ && Clock::now() - last_command_ > options_.watchdog &&
+            (v_mps_ != 0.0 || w_radps_ != 0.0)) {
+          set_motion(0.0, 0.0);
+          ++stats_.watchdog_stops;
+          if (options_.log) options_.log("watchdog: no command for 2 s, stopping");
+        }
+        step_and_send_sip();
+        continue;
+      }
+      const auto wait = std::chrono::duration_cast<milliseconds>(next_cycle - now);
+      const std::size_t n = stream_.read(buf, std::max(wait, milliseconds(1)));
+      if (n > 0) decoder_.feed({buf, n});
+      while (auto packet = decoder_.next()) handle(*packet);
+      stats_.bad_bytes = decoder_.dropped_bytes();
+    }
+  } catch (const StreamClosed&) {
+    // The client hung up: the robot stops, as a real one does when its watchdog fires.
+    set_motion(0.0, 0.0);
+  }
+}
+
+}  // namespace cogmap::hw
