@@ -196,8 +196,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
 }
 
 Experiment parse_experiment(const Node& root, const std::filesystem::path& file) {
-  root.expect_keys({"name", "description", "world", "seed", "duration_s", "robot", "controller",
-                    "mapper", "output"});
+  root.expect_keys({"name", "description", "world", "seed", "duration_s", "start", "robot",
+                    "controller", "mapper", "output"});
   Experiment e;
   e.file = file;
   e.name = root.get<std::string>("name");
@@ -210,6 +210,12 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
   e.seed = root.get_or<std::uint64_t>("seed", e.seed);
   e.duration_s = number_above(root, "duration_s", 0.0, e.duration_s);
 
+  if (const auto start = root.child("start")) {
+    start->expect_keys({"x_m", "y_m", "theta_deg"});
+    e.start = mapper::Pose2{
+        start->get<double>("x_m"), start->get<double>("y_m"),
+        mapper::wrap_angle_rad(start->get_or<double>("theta_deg", 0.0) * std::numbers::pi / 180.0)};
+  }
   if (const auto robot = root.child("robot")) {
     robot->expect_map();
     if (const auto src = robot->child("source")) e.robot_source = parse_source(*src);

@@ -34,7 +34,8 @@ RunSummary run_experiment(const Experiment& experiment, const RunOptions& option
                             "'cogmap run' simulates; use 'cogmap drive' or 'cogmap replay' for '" +
                                 std::string(to_string(experiment.robot_source)) + "'");
   }
-  const sim::WorldSpec world = sim::load_world(experiment.world);
+  sim::WorldSpec world = sim::load_world(experiment.world);
+  if (experiment.start) world.start = *experiment.start;
   const sim::SimRobotOptions robot_options = sim::parse_sim_robot_options(robot_block);
   std::unique_ptr<sim::SimRobot> robot;
   try {

@@ -41,6 +41,9 @@ struct Experiment {
   std::filesystem::path world;  ///< `world`, resolved against the experiment file's folder
   std::uint64_t seed = 1;       ///< `seed` (or --seed)
   double duration_s = 600.0;    ///< `duration_s`: upper bound of simulated (or real) time
+  /// `start` {x_m, y_m, theta_deg}: replaces the world's start pose (e.g. to map only some
+  /// rooms of a world); empty = the world's own start.
+  std::optional<mapper::Pose2> start;
   RobotSource robot_source = RobotSource::kSim;
   /// The whole `robot` block, validated later by the source's own parser
   /// (sim::parse_sim_robot_options for `sim`, the hw module for `p2os`/`log`).

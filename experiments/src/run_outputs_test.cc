@@ -1,0 +1,64 @@
+#include "cogmap/experiments/run_outputs.h"
+
+#include <gtest/gtest.h>
+
+#include "cogmap/experiments/run_metrics.h"
+
+namespace cogmap::experiments {
+namespace {
+
+TEST(RunOutputs, TrajectoryCsvColumnsAndEmptyTruth) {
+  std::vector<TrajectoryRow> rows(2);
+  rows[0] = {0.1, mapper::Pose2{1.0, 2.0, 0.5}, {1.0, 2.0, 0.5}, {1.0, 2.0, 0.5}};
+  rows[1] = {0.2, std::nullopt, {1.25, 2.0, -0.1}, {1.2, 2.0, 0.0}};
+  EXPECT_EQ(trajectory_csv(rows),
+            "t_s,true_x_m,true_y_m,true_theta_rad,odom_x_m,odom_y_m,odom_theta_rad,est_x_m,"
+            "est_y_m,est_theta_rad\n"
+            "0.1,1,2,0.5,1,2,0.5,1,2,0.5\n"
+            "0.2,,,,1.25,2,-0.1,1.2,2,0\n");
+}
+
+TEST(RunOutputs, SegmentsCsv) {
+  const std::vector<mapper::Mapper::MapSegment> s{{3, {{0.5, -1.0}, {2.0, 0.1}}}};
+  EXPECT_EQ(segments_csv(s), "asr_id,x1_m,y1_m,x2_m,y2_m\n3,0.5,-1,2,0.1\n");
+}
+
+TEST(RunOutputs, SvgFlipsYAndHasAScaleBar) {
+  SvgMap m;
+  m.map = {{0, {{0.0, 0.0}, {4.0, 0.0}}}, {0, {{0.0, 0.0}, {0.0, 3.0}}}};
+  m.truth = {{{0.0, 0.0}, {4.0, 0.0}}};
+  const std::string svg = map_svg(m);
+  // Bounds x 0..4, y 0..3 grown by 0.5 (and 0.8 below for the bar): the world origin maps to
+  // (0.5, 3.5) and (0, 3) to (0.5, 0.5) — north is up.
+  EXPECT_NE(svg.find("<line x1=\"0.5\" y1=\"3.5\" x2=\"0.5\" y2=\"0.5\"/>"), std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("id=\"truth\""), std::string::npos);
+  EXPECT_NE(svg.find(">1 m</text>"), std::string::npos);
+}
+
+TEST(RunMetrics, JsonHasTheRequiredKeysAndOmitsTruthMetricsWithoutTruth) {
+  RunMetrics m;
+  m.asr_count = 2;
+  m.memory.polyline_bytes = 80;
+  m.memory.grid_bytes = 1000;
+  m.memory.compression_ratio = 0.04;
+  m.sim_time_s = 10.0;
+  m.wall_time_s = 0.5;
+  const std::string without = metrics_json_text(m);
+  EXPECT_EQ(without.find("wall_error_median_m"), std::string::npos);
+  EXPECT_EQ(without.find("\"localization\": {"), std::string::npos);
+  EXPECT_NE(without.find("\"real_time_factor\": 20.0"), std::string::npos) << without;
+  m.map = MapAccuracy{};
+  m.map->wall_error_median_m = 0.04;
+  m.localization = LocalizationAccuracy{6.1, 0.7, 1.9, 0.21, 10};
+  const std::string with = metrics_json_text(m);
+  EXPECT_NE(with.find("\"wall_error_median_m\": 0.04"), std::string::npos);
+  EXPECT_NE(with.find("\"wall_coverage\": null"), std::string::npos);
+  EXPECT_NE(with.find("\"heading_error_final_deg\": {\n      \"odometry\": 6.1,\n      "
+                      "\"corrected\": 0.7\n    }"),
+            std::string::npos)
+      << with;
+}
+
+}  // namespace
+}  // namespace cogmap::experiments

@@ -1,0 +1,127 @@
+#include "cogmap/experiments/sweep_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <fstream>
+
+#include "cogmap/experiments/atomic_file.h"
+#include "cogmap/experiments/sweep_plots.h"
+
+namespace cogmap::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Fixture {
+  fs::path dir;
+  SweepSpec spec;
+};
+
+Fixture make_fixture(const std::string& name) {
+  Fixture f;
+  f.dir = fs::path(::testing::TempDir()) / ("sweep_runner_test_" + name);
+  fs::remove_all(f.dir);
+  fs::create_directories(f.dir);
+  std::ofstream(f.dir / "base.yaml") << "name: base\nworld: w.yaml\n";
+  std::ofstream(f.dir / "s.sweep.yaml")
+      << "base: base.yaml\nseeds: [1, 2]\nvary:\n  mapper.cell_scale_mm: [55, 100]\n";
+  f.spec = load_sweep(f.dir / "s.sweep.yaml");
+  return f;
+}
+
+// A stand-in run: metrics depend only on the run's inputs.
+void fake_run(const PlannedRun& p) {
+  const double cell = p.experiment.mapper.grid_options.cell_scale_mm;
+  write_file_atomic(p.dir / "metrics.json", "{\"asr_count\": " + std::to_string(p.experiment.seed) +
+                                                ", \"map\": {\"wall_error_median_m\": " +
+                                                std::to_string(cell / 1000.0) + "}}\n");
+}
+
+TEST(SweepRunner, RunsEveryRunInParallelAndWritesResults) {
+  Fixture f = make_fixture("all");
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  o.jobs = 3;
+  const auto planned = plan_sweep(f.spec, o);
+  ASSERT_EQ(planned.size(), 4u);
+  EXPECT_EQ(planned[0].dir, o.out_dir / "runs" / "mapper.cell_scale_mm=55,seed=1");
+  EXPECT_EQ(planned[2].experiment.seed, 1u);
+  EXPECT_DOUBLE_EQ(planned[2].experiment.mapper.grid_options.cell_scale_mm, 100.0);
+  const SweepOutcome out = run_sweep(f.spec, planned, o, fake_run);
+  EXPECT_EQ(out.finished, 4u);
+  EXPECT_TRUE(out.failures.empty());
+  EXPECT_EQ(out.results_csv, o.out_dir / "results.csv");
+  std::ifstream in(out.results_csv);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(),
+            "run,mapper.cell_scale_mm,seed,asr_count,map.wall_error_median_m\n"
+            "0,55,1,1,0.055\n"
+            "1,55,2,2,0.055\n"
+            "2,100,1,1,0.1\n"
+            "3,100,2,2,0.1\n");
+  const auto series = metric_series(out.results, "asr_count");
+  ASSERT_EQ(series.size(), 1u);
+  EXPECT_EQ(series[0].x, (std::vector<double>{55, 100}));
+  EXPECT_EQ(series[0].mean, (std::vector<double>{1.5, 1.5}));
+  EXPECT_NEAR(series[0].sd[0], std::sqrt(0.5), 1e-12);
+}
+
+TEST(SweepRunner, ResumesSkippingFinishedRunsAndReportsFailures) {
+  Fixture f = make_fixture("resume");
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  const auto planned = plan_sweep(f.spec, o);
+  fake_run(planned[1]);  // finished earlier
+  std::atomic<int> calls{0};
+  const SweepOutcome out = run_sweep(f.spec, planned, o, [&](const PlannedRun& p) {
+    ++calls;
+    if (p.run.index == 3) throw std::runtime_error("robot fell over");
+    fake_run(p);
+  });
+  EXPECT_EQ(calls.load(), 3);
+  EXPECT_EQ(out.skipped, 1u);
+  EXPECT_EQ(out.finished, 2u);
+  ASSERT_EQ(out.failures.size(), 1u);
+  EXPECT_EQ(out.failures[0], "mapper.cell_scale_mm=100,seed=2: robot fell over");
+  EXPECT_EQ(out.results.rows.size(), 3u);  // the failed run has no row
+}
+
+TEST(SweepRunner, ShardsWriteTheirOwnResultsAndMergeBack) {
+  Fixture f = make_fixture("shards");
+  std::vector<std::pair<std::string, ResultsTable>> tables;
+  for (std::size_t k = 1; k <= 3; ++k) {
+    SweepOptions o;
+    o.out_dir = f.dir / "out";
+    o.shard = {k, 3};
+    const auto out = run_sweep(f.spec, plan_sweep(f.spec, o), o, fake_run);
+    EXPECT_EQ(out.results_csv.filename(), "results_shard_" + std::to_string(k) + "_of_3.csv");
+    tables.emplace_back(out.results_csv.string(), out.results);
+  }
+  const auto files = results_files({f.dir / "out"});
+  EXPECT_EQ(files.size(), 3u);
+  const ResultsTable merged = merge_results(tables);
+  ASSERT_EQ(merged.rows.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(merged.rows[i][0], std::to_string(i));
+  EXPECT_THROW(results_files({f.dir / "nothing_here"}), std::runtime_error);
+}
+
+TEST(SweepRunner, BadVaryKeyFailsBeforeAnythingRuns) {
+  Fixture f = make_fixture("bad");
+  std::ofstream(f.dir / "bad.sweep.yaml")
+      << "base: base.yaml\nseeds: [1]\nvary:\n  mapper.cell_scale: [55]\n";
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  try {
+    (void)plan_sweep(load_sweep(f.dir / "bad.sweep.yaml"), o);
+    FAIL() << "accepted an unknown key";
+  } catch (const yaml::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("mapper.cell_scale: unknown key"), std::string::npos) << what;
+    EXPECT_NE(what.find("bad.sweep.yaml"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace cogmap::experiments
