@@ -191,15 +191,15 @@ TEST(P2osRobotPty, SurvivesOneCorruptedByteInFiveHundred) {
   {
     P2osRobot robot(open_serial_port(pty->slave_path, 9600), fast_options());
     robot.command({0.4, 0.0});
-    frames = drive_for(robot, 4000ms);
+    frames = drive_for(robot, 6000ms);
     stats = robot.stats();
     robot.shutdown();
   }
   stop = true;
   t.join();
-  EXPECT_GT(corrupt.flipped(), 3u);
+  EXPECT_GE(corrupt.flipped(), 4u);  // ~3000 bytes of SIPs at one flip per 500
   EXPECT_GT(stats.dropped_bytes, 0u);
-  EXPECT_GE(frames.size(), 30u);
+  EXPECT_GE(frames.size(), 45u);  // at most one SIP lost per flip
   for (std::size_t i = 1; i < frames.size(); ++i) {
     EXPECT_LT(std::abs(frames[i].odometry.x_m - frames[i - 1].odometry.x_m), 0.2) << i;
   }
