@@ -1,0 +1,78 @@
+// experiments/two_rooms.yaml end to end (figures off): the run directory is complete, the
+// metrics lie within honest bounds, and the same seed gives bit-identical results.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/runner.h"
+
+namespace cogmap::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+fs::path source_dir() {
+  const char* src = std::getenv("COGMAP_SOURCE_DIR");
+  return src ? fs::path(src) : fs::path(__FILE__).parent_path().parent_path().parent_path();
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Json run_once(const std::string& name) {
+  const Experiment e = load_experiment(source_dir() / "experiments" / "two_rooms.yaml");
+  RunOptions o;
+  o.out_dir = fs::path(::testing::TempDir()) / ("two_rooms_" + name);
+  o.figures = false;
+  fs::remove_all(o.out_dir);
+  (void)run_experiment(e, o);
+  return Json::parse(read(o.out_dir / "metrics.json"));
+}
+
+TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
+  const Json a = run_once("a");
+  const fs::path dir = fs::path(::testing::TempDir()) / "two_rooms_a";
+  for (const char* f : {"metrics.json", "trajectory.csv", "asr_graph.json", "map.svg",
+                        "map_segments.csv", "map_segments_odom.csv", "experiment.yaml",
+                        "grid_000.pgm", "grid_000.yaml", "asrs/000.json"}) {
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  }
+  EXPECT_FALSE(fs::exists(dir / "figures")) << "figures were switched off";
+
+  // Bounds. The route has the robot tour the west room and cross the 1 m doorway; in the
+  // current system (nav + sonar model of this commit) the sonar grid closes the doorway and
+  // the robot tours the west room only, so one ASR is all that is honest to require today.
+  // Tighten to asr_count >= 2 once the doorway is passed (docs/metrics.md, "Known results").
+  EXPECT_GE(a["asr_count"].get<int>(), 1);
+  const Json& map = a["map"];
+  EXPECT_LT(map["wall_error_median_m"].get<double>(), 0.2);
+  EXPECT_GT(map["wall_coverage"].get<double>(), 0.1);
+  EXPECT_LT(map["spurious_fraction"].get<double>(), 0.35);
+  EXPECT_GT(map["grid_bytes"].get<double>(), 0.0);
+  EXPECT_LT(map["compression_ratio"].get<double>(), 0.05);  // polylines ≪ grids (Table 4.2)
+  EXPECT_LT(a["localization"]["ate_rmse_m"]["corrected"].get<double>(), 1.0);
+  EXPECT_EQ(a["frames"].get<int>(), 3000);  // 300 s at 10 Hz: the route never ends early
+
+  // Same experiment, same seed: every block except timing is identical bit for bit, and so
+  // are the trajectory and the map.
+  const Json b = run_once("b");
+  for (const char* key :
+       {"asr_count", "map", "map_odometry", "localization", "rooms", "readings", "frames"}) {
+    EXPECT_EQ(a[key].dump(), b[key].dump()) << key;
+  }
+  const fs::path dir_b = fs::path(::testing::TempDir()) / "two_rooms_b";
+  EXPECT_EQ(read(dir / "trajectory.csv"), read(dir_b / "trajectory.csv"));
+  EXPECT_EQ(read(dir / "map_segments.csv"), read(dir_b / "map_segments.csv"));
+}
+
+}  // namespace
+}  // namespace cogmap::experiments
