@@ -22,6 +22,11 @@ function(cogmap_target_defaults target)
   if(COGMAP_WERROR)
     target_compile_options(${target} PRIVATE -Werror)
   endif()
+  # GCC 12 reports -Wrestrict inside libstdc++'s own std::string code at -O2/-O3 (GCC bug
+  # 105651, fixed in 13): a false positive in a system header that -Werror would turn fatal.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+    target_compile_options(${target} PRIVATE -Wno-restrict)
+  endif()
 endfunction()
 
 # cogmap_add_test(NAME name SOURCES ... LIBS ...): one GoogleTest executable, registered with ctest.
