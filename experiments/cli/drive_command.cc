@@ -1,0 +1,196 @@
+// `cogmap drive`: maps with a real P2-AT (or MobileSim, or `cogmap serve`) over P2OS on a
+// serial port or TCP, optionally recording a replayable log (docs/robot-driver.md).
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/runner.h"
+#include "cogmap/hw/fd_stream.h"
+#include "cogmap/hw/log_robot.h"
+#include "cogmap/hw/p2os_robot.h"
+#include "command_registry.h"
+
+namespace cogmap::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+// Ends the session (next_frame empty) after Ctrl-C, so the runner stops the robot and still
+// writes every output.
+class InterruptibleRobot final : public mapper::Robot {
+ public:
+  explicit InterruptibleRobot(mapper::Robot& inner) : inner_(inner) {}
+  const mapper::RobotGeometry& geometry() const override { return inner_.geometry(); }
+  std::optional<mapper::SensorFrame> next_frame() override {
+    if (g_interrupted) return std::nullopt;
+    return inner_.next_frame();
+  }
+  void command(const mapper::VelocityCommand& cmd) override { inner_.command(cmd); }
+  void stop() override { inner_.stop(); }
+
+ private:
+  mapper::Robot& inner_;
+};
+
+struct DriveArgs {
+  std::string port;
+  int baud = 9600;
+  std::string tcp;
+  std::string record;
+  std::string out;
+  std::optional<double> duration_s;
+  std::string controller;
+  std::string experiment;
+  std::vector<std::string> sets;
+  bool no_figures = false;
+};
+
+experiments::Experiment default_experiment(const std::vector<std::string>& sets) {
+  const fs::path tmp =
+      fs::temp_directory_path() / ("cogmap_drive_" + std::to_string(::getpid()) + ".yaml");
+  {
+    std::ofstream f(tmp);
+    f << "# drive without --experiment: mapper defaults, no world, stand still\n"
+      << "name: drive\nworld: none\nduration_s: 60\nrobot: {source: p2os}\n"
+      << "controller: {type: none}\n";
+  }
+  try {
+    experiments::Experiment e = experiments::load_experiment(tmp, sets);
+    fs::remove(tmp);
+    return e;
+  } catch (...) {
+    fs::remove(tmp);
+    throw;
+  }
+}
+
+int drive(const DriveArgs& args) {
+  if (args.port.empty() == args.tcp.empty()) {
+    std::cerr << "cogmap drive: give exactly one of --port DEV or --tcp HOST:PORT\n";
+    return kExitBadInput;
+  }
+  experiments::Experiment experiment;
+  try {
+    experiment = args.experiment.empty() ? default_experiment(args.sets)
+                                         : experiments::load_experiment(args.experiment, args.sets);
+  } catch (const yaml::ConfigError& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  if (args.duration_s) experiment.duration_s = *args.duration_s;
+  if (args.controller == "explore")
+    experiment.controller.type = experiments::ControllerKind::kExplore;
+  if (args.controller == "route") experiment.controller.type = experiments::ControllerKind::kRoute;
+  if (args.controller == "idle") experiment.controller.type = experiments::ControllerKind::kNone;
+  if (experiment.controller.type == experiments::ControllerKind::kRoute &&
+      experiment.controller.waypoints.empty()) {
+    std::cerr << "cogmap drive: --controller route needs waypoints (controller.waypoints in "
+                 "--experiment)\n";
+    return kExitBadInput;
+  }
+
+  std::unique_ptr<hw::ByteStream> stream;
+  try {
+    if (!args.port.empty()) {
+      stream = hw::open_serial_port(args.port, args.baud);
+    } else {
+      stream = hw::connect_tcp(args.tcp, 5000ms);
+    }
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const hw::StreamError& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    return kExitFailed;
+  }
+
+  hw::P2osRobotOptions robot_options;
+  robot_options.log = [](const std::string& m) { std::cerr << "cogmap drive: " << m << "\n"; };
+  std::unique_ptr<hw::P2osRobot> robot;
+  try {
+    robot = std::make_unique<hw::P2osRobot>(std::move(stream), robot_options);
+  } catch (const hw::StreamError& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    return kExitFailed;
+  }
+
+  std::unique_ptr<hw::RecordingRobot> recorder;
+  mapper::Robot* source = robot.get();
+  if (!args.record.empty()) {
+    try {
+      recorder = std::make_unique<hw::RecordingRobot>(*robot, args.record);
+      source = recorder.get();
+    } catch (const std::exception& e) {
+      std::cerr << "cogmap drive: " << e.what() << "\n";
+      return kExitBadInput;
+    }
+  }
+  InterruptibleRobot interruptible(*source);
+  g_interrupted = false;
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+
+  experiments::RunOptions options;
+  options.out_dir = args.out.empty() ? fs::path("runs") / experiment.name : fs::path(args.out);
+  if (args.no_figures) options.figures = false;
+  if (experiment.start) options.start_pose = *experiment.start;
+  int code = kExitOk;
+  try {
+    const auto summary =
+        experiments::run_robot_session(interruptible, experiment, nullptr, options);
+    std::cout << "cogmap drive: " << summary.metrics.asr_count << " rooms, outputs in "
+              << summary.out_dir.string() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    code = kExitFailed;
+  }
+  robot->shutdown();
+  const hw::P2osStats s = robot->stats();
+  std::cerr << "cogmap drive: " << s.sips << " SIPs, " << s.dropped_bytes << " bytes dropped, "
+            << s.connections - 1 << " reconnections\n";
+  if (!robot->failure().empty() && code == kExitOk && !g_interrupted) {
+    std::cerr << "cogmap drive: connection lost: " << robot->failure() << "\n";
+    code = kExitFailed;
+  }
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  return code;
+}
+
+const CommandRegistrar kRegistrar{
+    "drive", [](CLI::App& app, int& exit_code) {
+      auto args = std::make_shared<DriveArgs>();
+      CLI::App* sub = app.add_subcommand(
+          "drive", "Map with a P2-AT over P2OS (serial port or TCP) and write a run directory");
+      sub->add_option("--port", args->port, "serial device, e.g. /dev/ttyUSB0");
+      sub->add_option("--baud", args->baud, "serial rate (9600 at power-up)")
+          ->check(CLI::IsMember({9600, 19200, 38400, 57600, 115200}));
+      sub->add_option("--tcp", args->tcp, "HOST:PORT (MobileSim listens on 8101)");
+      sub->add_option("--record", args->record, "also write a replayable cogmap log here");
+      sub->add_option("--out", args->out, "run directory (default runs/<name>)");
+      sub->add_option("--duration", args->duration_s, "stop after this many seconds")
+          ->check(CLI::PositiveNumber);
+      sub->add_option("--controller", args->controller, "how to drive (default: experiment's)")
+          ->check(CLI::IsMember({"explore", "route", "idle"}));
+      sub->add_option("--experiment", args->experiment, "experiment file (mapper, controller)")
+          ->check(CLI::ExistingFile);
+      sub->add_option("--set", args->sets, "override any key, e.g. --set mapper.grid=bayes")
+          ->take_all()
+          ->allow_extra_args(false);
+      sub->add_flag("--no-figures", args->no_figures, "skip the PNG figures");
+      sub->callback([&exit_code, args] { exit_code = drive(*args); });
+    }};
+
+}  // namespace
+}  // namespace cogmap::cli

@@ -1,0 +1,148 @@
+// `cogmap replay LOG`: runs the mapper over a recorded log (cogmap, CARMEN or Player format)
+// through the same session loop as live runs (docs/robot-driver.md). Ground truth is used only
+// when the log carries true poses and --experiment names the world they belong to.
+#include <CLI/CLI.hpp>
+
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/runner.h"
+#include "cogmap/hw/log_import.h"
+#include "cogmap/hw/log_robot.h"
+#include "cogmap/mapper/seam/fake_robot.h"
+#include "cogmap/sim/world_geometry.h"
+#include "cogmap/sim/world_spec.h"
+#include "command_registry.h"
+
+namespace cogmap::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ReplayArgs {
+  std::string log;
+  std::string out;
+  std::string experiment;
+  std::vector<std::string> sets;
+  std::string format = "auto";
+  bool no_figures = false;
+};
+
+// Without --experiment: a minimal document, so --set and the mapper defaults work as in files.
+experiments::Experiment default_experiment(const std::string& name,
+                                           const std::vector<std::string>& sets) {
+  const fs::path tmp =
+      fs::temp_directory_path() / ("cogmap_replay_" + std::to_string(::getpid()) + ".yaml");
+  {
+    std::ofstream f(tmp);
+    f << "# replay without --experiment: mapper defaults, no world\n"
+      << "name: " << name << "\nworld: none\nrobot: {source: log}\ncontroller: {type: none}\n";
+  }
+  try {
+    experiments::Experiment e = experiments::load_experiment(tmp, sets);
+    fs::remove(tmp);
+    return e;
+  } catch (...) {
+    fs::remove(tmp);
+    throw;
+  }
+}
+
+int replay(const ReplayArgs& args) {
+  // The robot: a cogmap log streams; foreign logs are imported into memory.
+  std::unique_ptr<mapper::Robot> robot;
+  hw::LogRobot* cogmap_log = nullptr;
+  double last_time_s = 0.0;
+  try {
+    hw::LogFormat format;
+    if (args.format == "auto") {
+      format = hw::detect_log_format(args.log);
+    } else {
+      format = args.format == "cogmap"   ? hw::LogFormat::kCogmap
+               : args.format == "carmen" ? hw::LogFormat::kCarmen
+                                         : hw::LogFormat::kPlayer;
+    }
+    if (format == hw::LogFormat::kCogmap) {
+      auto log = std::make_unique<hw::LogRobot>(args.log);
+      cogmap_log = log.get();
+      last_time_s = log->last_time_s();
+      robot = std::move(log);
+    } else {
+      hw::ImportedLog imported = format == hw::LogFormat::kCarmen ? hw::import_carmen_log(args.log)
+                                                                  : hw::import_player_log(args.log);
+      if (!imported.frames.empty()) last_time_s = imported.frames.back().time_s;
+      std::cerr << "cogmap replay: imported " << imported.frames.size() << " frames ("
+                << imported.ignored_lines << " other lines skipped)\n";
+      robot = std::make_unique<mapper::FakeRobot>(imported.geometry, std::move(imported.frames));
+    }
+  } catch (const hw::LogError& e) {
+    std::cerr << "cogmap replay: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+
+  experiments::Experiment experiment;
+  std::unique_ptr<experiments::GroundTruth> truth;
+  experiments::RunOptions options;
+  try {
+    if (args.experiment.empty()) {
+      experiment = default_experiment("replay_" + fs::path(args.log).stem().string(), args.sets);
+    } else {
+      experiment = experiments::load_experiment(args.experiment, args.sets);
+      sim::WorldSpec world = sim::load_world(experiment.world);
+      if (experiment.start) world.start = *experiment.start;
+      // Without ground truth the odometry frame is placed like `cogmap drive` places it.
+      if (experiment.start) options.start_pose = *experiment.start;
+      if (cogmap_log && cogmap_log->has_true_poses()) {
+        truth = std::make_unique<experiments::GroundTruth>(
+            experiments::GroundTruth{sim::true_surfaces(world), world.start});
+      }
+    }
+  } catch (const yaml::ConfigError& e) {
+    std::cerr << "cogmap replay: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  if (cogmap_log && cogmap_log->has_true_poses() && !truth) {
+    std::cerr << "cogmap replay: the log carries true poses but no --experiment names their "
+                 "world: map metrics are omitted\n";
+  }
+  // The log decides what happens: every frame is replayed and commands are not needed.
+  experiment.controller.type = experiments::ControllerKind::kNone;
+  experiment.duration_s = last_time_s + 1.0;
+  options.out_dir = args.out.empty() ? fs::path("runs") / experiment.name : fs::path(args.out);
+  if (args.no_figures) options.figures = false;
+  try {
+    const auto summary = experiments::run_robot_session(*robot, experiment, truth.get(), options);
+    std::cout << "cogmap replay: " << args.log << ": " << summary.metrics.asr_count
+              << " rooms, outputs in " << summary.out_dir.string() << "\n";
+    return kExitOk;
+  } catch (const std::exception& e) {
+    std::cerr << "cogmap replay: " << e.what() << "\n";
+    return kExitFailed;
+  }
+}
+
+const CommandRegistrar kRegistrar{
+    "replay", [](CLI::App& app, int& exit_code) {
+      auto args = std::make_shared<ReplayArgs>();
+      CLI::App* sub = app.add_subcommand(
+          "replay", "Map a recorded log (cogmap, CARMEN or Player 2.x) and write a run directory");
+      sub->add_option("log", args->log, "the log file")->required()->check(CLI::ExistingFile);
+      sub->add_option("--out", args->out, "run directory (default runs/replay_<log name>)");
+      sub->add_option("--experiment", args->experiment,
+                      "experiment file: mapper settings, and the world for ground truth")
+          ->check(CLI::ExistingFile);
+      sub->add_option("--set", args->sets, "override any key, e.g. --set mapper.grid=bayes")
+          ->take_all()
+          ->allow_extra_args(false);
+      sub->add_option("--format", args->format, "log format (default: detected)")
+          ->check(CLI::IsMember({"auto", "cogmap", "carmen", "player"}));
+      sub->add_flag("--no-figures", args->no_figures, "skip the PNG figures (faster)");
+      sub->callback([&exit_code, args] { exit_code = replay(*args); });
+    }};
+
+}  // namespace
+}  // namespace cogmap::cli
