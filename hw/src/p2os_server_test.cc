@@ -1,0 +1,146 @@
+// The robot side alone, over an in-memory link: sync replies, command handling, SIP content
+// and the watchdog.
+#include "cogmap/hw/p2os_server.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "test_streams.h"
+
+namespace cogmap::hw {
+namespace {
+
+using namespace std::chrono_literals;
+using p2os::Command;
+
+// Reads packets from `link` until one of `type` arrives (or 2 s pass).
+std::optional<p2os::Packet> await(ByteStream& link, p2os::PacketDecoder& d, std::uint8_t type) {
+  const auto end = std::chrono::steady_clock::now() + 2s;
+  std::uint8_t buf[256];
+  while (std::chrono::steady_clock::now() < end) {
+    while (auto p = d.next()) {
+      if (p->type() == type) return p;
+    }
+    const std::size_t n = link.read(buf, 20ms);
+    d.feed({buf, n});
+  }
+  return std::nullopt;
+}
+
+struct Served {
+  std::unique_ptr<ByteStream> robot_end, client;
+  testing::KinematicBody body;
+  std::unique_ptr<P2osServer> server;
+  std::atomic<bool> stop{false};
+  std::thread thread;
+  p2os::PacketDecoder decoder;
+
+  explicit Served(P2osServerOptions options = {}) {
+    auto pair = make_memory_pair();
+    robot_end = std::move(pair.first);
+    client = std::move(pair.second);
+    server = std::make_unique<P2osServer>(*robot_end, body, options);
+    thread = std::thread([this] { server->run(stop); });
+  }
+  ~Served() {
+    stop = true;
+    thread.join();
+  }
+  void open() {
+    client->write(p2os::encode_command(Command::kSync0));
+    ASSERT_TRUE(await(*client, decoder, 0));
+    client->write(p2os::encode_command(Command::kSync1));
+    ASSERT_TRUE(await(*client, decoder, 1));
+    client->write(p2os::encode_command(Command::kSync2));
+    const auto id = await(*client, decoder, 2);
+    ASSERT_TRUE(id);
+    EXPECT_EQ(p2os::decode_sync2(id->body).subclass, "p2at");
+    client->write(p2os::encode_command(Command::kOpen));
+    client->write(p2os::encode_command(Command::kEnable, 1));
+  }
+};
+
+TEST(P2osServer, SyncOutOfOrderIsNotAnswered) {
+  Served s;
+  s.client->write(p2os::encode_command(Command::kSync2));
+  EXPECT_FALSE(await(*s.client, s.decoder, 2).has_value());
+  EXPECT_EQ(s.server->stats().syncs, 0u);
+}
+
+TEST(P2osServer, SipsCarryPoseSonarAndMotionFlags) {
+  Served s;
+  s.open();
+  s.client->write(p2os::encode_command(Command::kVel, 400));
+  s.client->write(p2os::encode_command(Command::kRVel, -20));
+  std::optional<p2os::Packet> packet;
+  for (int i = 0; i < 4; ++i) packet = await(*s.client, s.decoder, p2os::kSipMoving);
+  ASSERT_TRUE(packet);  // the fourth moving SIP: the body has moved by now
+  const p2os::Sip sip = p2os::decode_sip(packet->body);
+  EXPECT_TRUE(sip.motors_enabled());
+  EXPECT_EQ(sip.sonars.size(), 4u);
+  EXPECT_EQ(*sip.rot_vel, -200);  // 0.1 deg/s units
+  EXPECT_GT(sip.x_pos, 0);
+  EXPECT_NEAR(s.body.current().v_mps, 0.4, 1e-12);
+  EXPECT_NEAR(s.body.current().w_radps, -20 * M_PI / 180, 1e-12);
+}
+
+TEST(P2osServer, Vel2SetsWheelSpeeds) {
+  Served s;
+  s.open();
+  std::this_thread::sleep_for(100ms);
+  // Left +10 (0.2 m/s) in the high byte, right +15 (0.3 m/s) in the low byte.
+  s.client->write(p2os::encode_command(Command::kVel2, (10 << 8) | 15));
+  std::this_thread::sleep_for(150ms);
+  EXPECT_NEAR(s.body.current().v_mps, 0.25, 1e-12);
+  EXPECT_NEAR(s.body.current().w_radps, 0.1 / 0.394, 1e-12);
+  // Negative left wheel: -5 (0xFB) left, +5 right: turn in place.
+  s.client->write(p2os::encode_command(Command::kVel2, (0xFB << 8) | 5));
+  std::this_thread::sleep_for(150ms);
+  EXPECT_NEAR(s.body.current().v_mps, 0.0, 1e-12);
+  EXPECT_NEAR(s.body.current().w_radps, 0.2 / 0.394, 1e-12);
+}
+
+TEST(P2osServer, MotionIgnoredUntilMotorsEnabled) {
+  Served s;
+  s.client->write(p2os::encode_command(Command::kSync0));
+  await(*s.client, s.decoder, 0);
+  s.client->write(p2os::encode_command(Command::kSync1));
+  await(*s.client, s.decoder, 1);
+  s.client->write(p2os::encode_command(Command::kSync2));
+  await(*s.client, s.decoder, 2);
+  s.client->write(p2os::encode_command(Command::kOpen));
+  s.client->write(p2os::encode_command(Command::kVel, 300));
+  std::this_thread::sleep_for(200ms);
+  EXPECT_EQ(s.body.current().v_mps, 0.0);
+}
+
+TEST(P2osServer, WatchdogStopsAfterTwoSecondsOfSilence) {
+  Served s;
+  s.open();
+  s.client->write(p2os::encode_command(Command::kVel, 300));
+  std::this_thread::sleep_for(1000ms);
+  EXPECT_NEAR(s.body.current().v_mps, 0.3, 1e-12);  // still within the watchdog time
+  std::this_thread::sleep_for(1800ms);
+  EXPECT_EQ(s.body.current().v_mps, 0.0);
+  EXPECT_EQ(s.server->stats().watchdog_stops, 1u);
+}
+
+TEST(P2osServer, CloseStopsSipsAndResetSendsFF) {
+  Served s;
+  s.open();
+  ASSERT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+  s.server->request_reset();
+  ASSERT_TRUE(await(*s.client, s.decoder, p2os::kResetPacket));
+  // After the reset the robot is closed: no more SIPs until a new handshake.
+  std::this_thread::sleep_for(150ms);
+  while (s.decoder.next()) {
+  }
+  std::uint8_t buf[512];
+  std::size_t got = 0;
+  for (int i = 0; i < 5; ++i) got += s.client->read(buf, 50ms);
+  EXPECT_EQ(got, 0u);
+}
+
+}  // namespace
+}  // namespace cogmap::hw
