@@ -45,7 +45,7 @@ RobotSource parse_source(const Node& n) {
 }
 
 ControllerConfig parse_controller(const Node& block) {
-  block.expect_keys({"type", "speed_mps", "waypoints", "waypoint_tolerance_m"});
+  block.expect_keys({"type", "speed_mps", "waypoints", "waypoint_tolerance_m", "pose"});
   ControllerConfig c;
   const Node type = block["type"];
   const std::string t = type.as<std::string>();
@@ -67,6 +67,13 @@ ControllerConfig parse_controller(const Node& block) {
       if (!p.is_sequence() || p.size() != 2) p.fail("a waypoint is [x_m, y_m]");
       c.waypoints.emplace_back(p.at(0).as<double>(), p.at(1).as<double>());
     }
+  }
+  if (const auto pose = block.child("pose")) {
+    const std::string p = pose->as<std::string>();
+    if (p != "estimate" && p != "truth") {
+      pose->fail("unknown pose source '" + p + "' (expected estimate or truth)");
+    }
+    c.steer_by_truth = p == "truth";
   }
   if (c.type == ControllerKind::kRoute && c.waypoints.empty()) {
     block.fail("a route controller needs at least one waypoint in 'waypoints'");
@@ -132,7 +139,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "polyline_gap_cells", "douglas_peucker_cells", "min_abs_correlation",
                      "window_m", "asr_boundary", "asr_distance_m", "localization",
                      "door_close_side_m", "min_room_travel_m", "min_room_duration_s",
-                     "max_correction_deg"});
+                     "max_correction_deg", "no_echo_clear_m", "hit_increment",
+                     "neighbour_increment", "miss_decrement"});
   mapper::MapperOptions o;
   if (const auto g = block.child("grid")) {
     const std::string name = g->as<std::string>();
@@ -153,6 +161,14 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.grid_options.cell_scale_mm =
       number_in(block, "cell_scale_mm", 10.0, 1000.0, o.grid_options.cell_scale_mm);
   o.grid_options.window_m = number_above(block, "window_m", 0.0, o.grid_options.window_m);
+  o.grid_options.no_echo_clear_m =
+      number_in(block, "no_echo_clear_m", -1.0, 100.0, o.grid_options.no_echo_clear_m);
+  o.grid_options.hit_increment =
+      number_in(block, "hit_increment", 0.0, 15.0, o.grid_options.hit_increment);
+  o.grid_options.neighbour_increment =
+      number_in(block, "neighbour_increment", 0.0, 15.0, o.grid_options.neighbour_increment);
+  o.grid_options.miss_decrement =
+      number_in(block, "miss_decrement", 0.0, 15.0, o.grid_options.miss_decrement);
   // ε lives on the HIMM scale [-3, 15]; at or above the cap nothing would ever be occupied.
   o.builder.occupied_threshold = number_in(
       block, "occupied_threshold", 0.0, mapper::kHistogramMax - 1.0, o.builder.occupied_threshold);

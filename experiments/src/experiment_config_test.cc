@@ -142,6 +142,18 @@ TEST(ExperimentConfig, RouteNeedsWaypoints) {
       << error_of(p);
 }
 
+TEST(ExperimentConfig, ControllerPoseSource) {
+  const fs::path p =
+      write_temp("pose.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore, pose: truth}\n");
+  EXPECT_TRUE(load_experiment(p).controller.steer_by_truth);
+  const fs::path est = write_temp("est.yaml", "name: r\nworld: w.yaml\ncontroller: {type: none}\n");
+  EXPECT_FALSE(load_experiment(est).controller.steer_by_truth);
+  const fs::path bad = write_temp(
+      "badpose.yaml", "name: r\nworld: w.yaml\ncontroller:\n  type: explore\n  pose: gps\n");
+  EXPECT_NE(error_of(bad).find(":5: controller.pose: unknown pose source 'gps'"), std::string::npos)
+      << error_of(bad);
+}
+
 TEST(ExperimentConfig, RecordsRealRobotSources) {
   const fs::path p = write_temp("p2os.yaml", "name: r\nworld: w.yaml\nrobot: {source: p2os}\n");
   EXPECT_EQ(load_experiment(p).robot_source, RobotSource::kP2os);

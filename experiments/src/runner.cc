@@ -69,6 +69,14 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
   return mapper::nav::make_idle_controller();
 }
 
+/// What the controller sees this cycle: the mapper's estimate and grid, or (steering by truth)
+/// the true pose and no grid, since the grid lives in the estimate frame.
+mapper::nav::NavInput nav_input(const ControllerConfig& c, const mapper::SensorFrame& frame,
+                                const mapper::Mapper& mapper, const mapper::RobotGeometry& robot) {
+  if (c.steer_by_truth && frame.true_pose) return {&frame, *frame.true_pose, nullptr, &robot};
+  return {&frame, mapper.pose_estimate(), &mapper.grid(), &robot};
+}
+
 /// The frame loop and its products, kept apart from the writing of files.
 struct SessionResult {
   std::vector<TrajectoryRow> rows;
@@ -135,6 +143,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   });
 
   auto controller = make_controller(experiment.controller);
+  if (experiment.controller.steer_by_truth && !truth) {
+    throw RunError("controller.pose: truth needs ground truth (a simulated robot)");
+  }
   SessionResult session;
   const auto wall_start = Clock::now();
   try {
@@ -152,8 +163,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       }
       if (frame->time_s >= experiment.duration_s) break;
       if (experiment.controller.type == ControllerKind::kRoute && controller->done()) break;
-      const mapper::nav::NavInput input{&*frame, mapper.pose_estimate(), &mapper.grid(), &geometry};
-      robot.command(controller->step(input));
+      robot.command(controller->step(nav_input(experiment.controller, *frame, mapper, geometry)));
     }
     robot.stop();
     mapper.finish();

@@ -19,10 +19,11 @@ using testing::single_forward_sonar;
 constexpr Pose2 kRobot{0.05, 0.05, 0.0};
 constexpr CellIndex kRobotCell{60, 60};
 
-/// The increments of thesis Figs. A.2-A.3 (+1.5 on the cell, +1.5 on each of the 3x3), which
-/// the exact values below follow; the defaults (§2.2.3) are checked separately.
+/// The increments of thesis Figs. A.2-A.3 (+1.5 on the cell, +1.5 on each of the 3x3) and a
+/// 2 m window, which the exact values below follow; the defaults are checked separately.
 GridOptions fig_a2_options() {
   GridOptions options;
+  options.window_m = 2.0;
   options.hit_increment = 1.5;
   options.neighbour_increment = 1.5;
   return options;
@@ -160,6 +161,24 @@ TEST(Mhimm, ReadingBeyondWindowDecrementsExactlyToTheEdge) {
   expected.set(kRobotCell, kRobotPathValue);
   for (int x = 61; x <= 80; ++x) expected.set({x, 60}, -1.0f);
   EXPECT_EQ(cells_differing(u->histogram(), expected), 0u);
+}
+
+TEST(Mhimm, NoEchoClearDistanceLimitsWhatANoEchoBeamClears) {
+  GridOptions options = fig_a2_options();
+  options.no_echo_clear_m = 0.5;  // clears (0.05, 0.05) .. (0.55, 0.05): cells 61..65
+  auto u = make(GridKind::kMhimm, single_forward_sonar(), options);
+  u->mark_robot(kRobot);
+  ASSERT_TRUE(u->integrate(kRobot, {0, 5.0, false, 0.0}));
+  for (int x = 61; x <= 65; ++x) EXPECT_FLOAT_EQ(u->histogram_at({x, 60}), -1.0f) << x;
+  EXPECT_FLOAT_EQ(u->histogram_at({66, 60}), 0.0f);
+  // An echo beyond w still clears to the window edge (thesis Fig. A.3).
+  ASSERT_TRUE(u->integrate(kRobot, echo(0, 3.0)));
+  EXPECT_FLOAT_EQ(u->histogram_at({80, 60}), -1.0f);
+  options.no_echo_clear_m = 0.0;  // a no-echo beam then clears nothing
+  auto quiet = make(GridKind::kMhimm, single_forward_sonar(), options);
+  const HistogramGrid before = quiet->histogram();
+  ASSERT_TRUE(quiet->integrate(kRobot, {0, 5.0, false, 0.0}));
+  EXPECT_EQ(cells_differing(quiet->histogram(), before), 0u);
 }
 
 TEST(Himm, ReadingBeyondWindowIsAcceptedButIgnored) {

@@ -56,8 +56,12 @@ class MhimmUpdater final : public GridUpdater {
     }
     // Beyond w, or no echo: clear up to where the beam leaves the window (Fig. A.3's Else
     // branch), or up to the range itself if the beam ends inside the window without an echo.
-    const double exit_m = window_exit_m(beam, centre, options_.window_m);
+    double exit_m = window_exit_m(beam, centre, options_.window_m);
     if (exit_m < 0.0) return true;  // transducer outside the window: nothing of the beam inside
+    if (!reading.echo && options_.no_echo_clear_m >= 0.0) {
+      exit_m = std::min(exit_m, options_.no_echo_clear_m);
+      if (exit_m <= 0.0) return true;
+    }
     const Point2 end = beam.at(std::min(exit_m, reading.range_m));
     grow_to_hold(centre, cells_);
     grow_to_hold(end, cells_);

@@ -32,6 +32,14 @@ struct ControllerConfig {
   double speed_mps = 0.5;                 ///< cruise speed, thesis §4: about 0.5 m/s
   std::vector<mapper::Point2> waypoints;  ///< world frame, metres (route only)
   double waypoint_tolerance_m = 0.4;      ///< a waypoint counts as reached within this
+  /// `pose`: what the controller steers by. `estimate` (default) is the mapper's corrected
+  /// pose, all a real robot has. `truth` (simulation only) steers by the true pose, like the
+  /// human operator or scripted path of a mapping experiment: the mapper still sees only
+  /// odometry and sonar, so map metrics are unaffected, but a drifting estimate can no longer
+  /// send the robot into a door post. With `truth` the controller avoids obstacles with its own
+  /// short-term sonar memory (placed by the true pose), not with the mapper's grid, which lives
+  /// in the estimate frame.
+  bool steer_by_truth = false;
 };
 
 /// A fully parsed experiment, overrides applied.

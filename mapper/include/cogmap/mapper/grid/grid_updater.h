@@ -23,7 +23,11 @@ std::string_view to_string(GridKind kind);
 
 struct GridOptions {
   double cell_scale_mm = 100.0;  ///< ℘, thesis Table 4.1 (10 cm cells)
-  double window_m = 2.0;         ///< w, thesis §3.1.4: readings within w update the grid
+  /// w, thesis §3.1.4: readings within w update the grid. The thesis gives no value. At 3 m
+  /// the 30° beam is 1.6 m wide, about the width a room wall is seen at from a route through
+  /// the room; measured (docs/results.md) coverage 0.17 -> 0.40 in two_rooms and 0.13 -> 0.26
+  /// in nine_rooms going from 2 m to 3 m, while 3.5-4 m added spurious walls.
+  double window_m = 3.0;
   /// HIMM/MHIMM: the hit cell gets hit_increment, then every cell of its 3x3 block, the hit
   /// cell included, gets neighbour_increment. The defaults are thesis §2.2.3 (+3 on the cell,
   /// +0.5 on neighbours). Figs. A.2-A.3 (1.5 and 1.5: +3 / +1.5) fatten every wall by a cell
@@ -32,6 +36,12 @@ struct GridOptions {
   /// on the same synthetic room (docs/algorithms/10-grids.md). Fig. A.2 remains selectable.
   double hit_increment = 2.5;        ///< thesis §2.2.3 (+3 in total on the hit cell)
   double neighbour_increment = 0.5;  ///< each of the 3x3 incl. the hit cell, thesis §2.2.3
+  /// MHIMM: how far along its beam a reading WITHOUT an echo clears (metres; capped at w).
+  /// Thesis Fig. A.3 clears to the window edge for every reading beyond w, echo or not; a
+  /// specular sonar returns nothing from a wall met at more than ~22° from its normal, so a
+  /// no-echo beam usually crosses a wall it did not see and Fig. A.3 erodes exactly the walls
+  /// parallel to the robot's path. -1 = the thesis (clear to w). docs/algorithms/10-grids.md.
+  double no_echo_clear_m = -1.0;
   double miss_decrement = 1.0;       ///< decrement along the beam, thesis §2.2.3
   double bayes_max_occupied = 0.98;  ///< MO, thesis Table 2.1 (Moravec's maximum occupancy)
   double initial_extent_m = 12.0;    ///< side of a new room's grid before it grows
