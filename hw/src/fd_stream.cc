@@ -8,6 +8,7 @@
 #include <poll.h>
 #include <pty.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -67,7 +68,10 @@ std::pair<std::string, std::string> split_host_port(const std::string& host_port
 
 }  // namespace
 
-FdStream::FdStream(int fd, std::string name) : fd_(fd), name_(std::move(name)) {}
+FdStream::FdStream(int fd, std::string name) : fd_(fd), name_(std::move(name)) {
+  struct stat st {};
+  socket_ = ::fstat(fd_, &st) == 0 && S_ISSOCK(st.st_mode);
+}
 
 FdStream::~FdStream() {
   if (fd_ >= 0) ::close(fd_);
@@ -88,9 +92,8 @@ void FdStream::write(std::span<const std::uint8_t> bytes) {
     }
     if (r == 0) continue;
     if (p.revents & (POLLHUP | POLLERR)) throw StreamClosed(name_ + ": connection closed");
-    const ssize_t n = ::send(fd_, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
-    if (n < 0 && errno == ENOTSOCK) {
-      // Not a socket (serial port, pty): plain write; SIGPIPE does not apply to terminals.
+    if (!socket_) {
+      // Serial port or pty: plain write; SIGPIPE does not apply to terminals.
       const ssize_t m = ::write(fd_, bytes.data() + done, bytes.size() - done);
       if (m < 0) {
         if (errno == EAGAIN || errno == EINTR) continue;
@@ -100,6 +103,7 @@ void FdStream::write(std::span<const std::uint8_t> bytes) {
       done += static_cast<std::size_t>(m);
       continue;
     }
+    const ssize_t n = ::send(fd_, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
     if (n < 0) {
       if (errno == EAGAIN || errno == EINTR) continue;
       if (errno == EPIPE || errno == ECONNRESET) throw StreamClosed(sys_error("send", name_));

@@ -176,6 +176,12 @@ void P2osServer::run(const std::atomic<bool>& stop) {
           ++stats_.watchdog_stops;
           if (options_.log) options_.log("watchdog: no command for 2 s, stopping");
         }
+        if (open_ && Clock::now() - last_command_ > options_.client_timeout) {
+          open_ = false;
+          sync_step_ = 0;
+          ++stats_.client_timeouts;
+          if (options_.log) options_.log("client silent: closing, waiting for a new handshake");
+        }
         step_and_send_sip();
         continue;
       }

@@ -144,3 +144,29 @@ TEST(P2osServer, CloseStopsSipsAndResetSendsFF) {
 
 }  // namespace
 }  // namespace cogmap::hw
+
+namespace cogmap::hw {
+namespace {
+
+TEST(P2osServer, SilentOpenClientIsDroppedAfterClientTimeout) {
+  P2osServerOptions o;
+  o.client_timeout = 600ms;
+  Served s(o);
+  s.open();
+  ASSERT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+  std::this_thread::sleep_for(1000ms);
+  EXPECT_EQ(s.server->stats().client_timeouts, 1u);
+  while (s.decoder.next()) {
+  }
+  std::uint8_t buf[512];
+  while (s.client->read(buf, 1ms) > 0) {
+  }
+  std::size_t got = 0;
+  for (int i = 0; i < 5; ++i) got += s.client->read(buf, 50ms);
+  EXPECT_EQ(got, 0u);  // no SIPs into a link nobody reads
+  s.open();            // a new client can sync again
+  EXPECT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+}
+
+}  // namespace
+}  // namespace cogmap::hw

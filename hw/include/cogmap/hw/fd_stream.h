@@ -29,6 +29,7 @@ class FdStream : public ByteStream {
  private:
   int fd_;
   std::string name_;
+  bool socket_;  // send(MSG_NOSIGNAL) for sockets: a vanished peer is an error, not SIGPIPE
 };
 
 /// Opens a serial device raw 8N1, no flow control, at `baud` (9600, 19200, 38400, 57600 or

@@ -25,6 +25,9 @@ struct P2osServerOptions {
   std::chrono::milliseconds cycle{100};
   /// The robot stops when no command arrives for this long while open (P2OS watchdog).
   std::chrono::milliseconds watchdog{2000};
+  /// An open client silent this long is gone (crashed without CLOSE): the server closes and
+  /// waits for a new handshake, so SIPs do not pile up in a link nobody reads.
+  std::chrono::milliseconds client_timeout{10000};
   /// Track width used to turn VEL2 wheel speeds into a turn rate, metres.
   double vel2_track_m = 0.394;
   /// Position counters at power-up: a controller left running holds any value (tests use
@@ -40,8 +43,9 @@ struct P2osServerStats {
   std::uint64_t sips_sent = 0;
   std::uint64_t commands = 0;  ///< valid client packets after sync
   std::uint64_t watchdog_stops = 0;
-  std::uint64_t syncs = 0;      ///< completed handshakes
-  std::uint64_t bad_bytes = 0;  ///< discarded by the decoder
+  std::uint64_t client_timeouts = 0;  ///< open clients dropped after client_timeout
+  std::uint64_t syncs = 0;            ///< completed handshakes
+  std::uint64_t bad_bytes = 0;        ///< discarded by the decoder
 };
 
 class P2osServer {
