@@ -1,6 +1,6 @@
 // Simulator speed: simulated seconds per wall-clock second of SimRobot alone (physics, slip,
 // encoders, sonar) in nine_rooms, and the one-off cost of extracting a world's true surfaces.
-// docs/performance/simulator.md records the figures.
+// docs/performance.md records the figures.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>

@@ -2,7 +2,7 @@
 // extracted points each least-squares line is fitted to; the fitted lines replace the DP
 // segments.
 //
-// Readings (docs/algorithms/20-asr-pipeline.md): "reject the fitted line" keeps the DP segment
+// Readings (docs/algorithms.md): "reject the fitted line" keeps the DP segment
 // itself in the wall (so coverage is not lost) and reports it in `rejected`; a fitted segment's
 // ends are where it meets its fitted neighbours (their intersection, if that lies near the
 // shared DP vertex) or else the projections of the DP vertices onto the line.

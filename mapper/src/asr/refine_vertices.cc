@@ -1,5 +1,5 @@
 // Corner refinement between Douglas-Peucker and the fit (not in the thesis; see
-// docs/algorithms/20-asr-pipeline.md). VertexSimplify keeps only every τ-th cell, so the cell
+// docs/algorithms.md). VertexSimplify keeps only every τ-th cell, so the cell
 // that forms a room corner is often dropped and DP marks one or two chamfer vertices up to τ
 // away from it instead. The fit then spans a corner with a two-cell DP segment, finds |ρ| far
 // below 0.9 and rejects it. Moving each DP vertex to the extracted point that DP itself would

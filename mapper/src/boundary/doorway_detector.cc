@@ -1,5 +1,5 @@
 // The doorway state machine of thesis Fig. 3.4 (§3.1.2). The figure is not in the text we have;
-// docs/algorithms/30-boundaries.md reconstructs it from the prose: two states (in a room, at an
+// docs/algorithms.md reconstructs it from the prose: two states (in a room, at an
 // access point) and the events L/¬L, R/¬R from the side sonars.
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Readings per second of each updater (docs/performance/grids.md). A robot wanders a 10 m
+// Readings per second of each updater (docs/performance.md). A robot wanders a 10 m
 // room: each frame a pose uniform in the room's inner 8 m square with a random heading, then
 // all 16 P2-AT sonars with ranges uniform in 0.3-5 m, one in ten without an echo. The script
 // is generated once from a fixed seed, so every run integrates the same readings.

@@ -16,7 +16,7 @@ double table_weight(double distance_m, double max_range_m, double alpha_rad,
 // Table 2.2 read literally turns against itself when its weight drops below 0.5 (far from the
 // sensor and near the cone's edge): region I would then lower Pr(H) and region II raise it, so a
 // beam that passed through a cell would make it "more occupied". Weak evidence is made neutral
-// (likelihood ratio 1) instead; docs/algorithms/10-grids.md.
+// (likelihood ratio 1) instead; docs/algorithms.md.
 SensorLikelihood bayes_region_one(double weight, double max_occupied) {
   const double occupied = std::max(weight * max_occupied, 0.5);
   return {occupied, 1.0 - occupied};

@@ -1,4 +1,4 @@
-// Direction statistics modulo 90° used to initialise EM (docs/algorithms/40-em-localization.md).
+// Direction statistics modulo 90° used to initialise EM (docs/algorithms.md).
 
 #include "cogmap/mapper/localization/directions.h"
 

@@ -81,7 +81,7 @@ void Vfh::build(const std::vector<ObstaclePoint>& obstacles, double range_m) {
   }
   // Binary histogram with hysteresis on the enlarged (unsmoothed) density: enlargement already
   // reserves the robot's clearance, and smoothing before the threshold would close the 1-2
-  // free sectors a 1 m doorway leaves (docs/algorithms/60-navigation.md).
+  // free sectors a 1 m doorway leaves (docs/algorithms.md).
   const double high = threshold_, low = options_.hysteresis_ratio * threshold_;
   for (int k = 0; k < n; ++k) {
     if (density_[k] > high) {

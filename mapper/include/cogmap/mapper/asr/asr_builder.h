@@ -19,7 +19,7 @@ struct AsrBuilderOptions {
   double min_abs_correlation = 0.9;     ///< |ρ| acceptance, thesis §3.1.8
   double max_sonar_range_m = 5.0;       ///< max_dist of the clean-map rays, thesis Fig. 3.8
   /// Fitted lines meet at their intersection only if it lies this close to the shared DP vertex
-  /// (not in the thesis; see docs/algorithms/20-asr-pipeline.md).
+  /// (not in the thesis; see docs/algorithms.md).
   double join_max_distance_cells = 3.0;
   /// Extracted polylines with fewer cells are dropped as noise (not in the thesis; see docs).
   int min_polyline_cells = 2;

@@ -1,6 +1,6 @@
 #pragma once
 /// The individual stages of the room pipeline (thesis §3.1.5-3.1.8), exposed for tests and
-/// tools. docs/algorithms/20-asr-pipeline.md maps every function to its thesis figure.
+/// tools. docs/algorithms.md maps every function to its thesis figure.
 
 #include <cstddef>
 #include <span>

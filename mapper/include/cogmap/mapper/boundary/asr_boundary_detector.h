@@ -1,7 +1,7 @@
 #pragma once
 /// Decides when the robot leaves one ASR and enters the next: the doorway state machine of
 /// thesis Fig. 3.4 (obstacles close on both sides), or a new ASR every fixed distance (§3.1.2).
-/// docs/algorithms/30-boundaries.md reconstructs the figure and lists every interpretation.
+/// docs/algorithms.md reconstructs the figure and lists every interpretation.
 
 #include <memory>
 #include <optional>
@@ -15,7 +15,7 @@ namespace cogmap::mapper {
 enum class BoundaryKind { kDoorway, kDistance };
 
 /// Options of the doorway state machine (thesis Fig. 3.4; the thesis gives no numbers, these
-/// are ours and documented in docs/algorithms/30-boundaries.md).
+/// are ours and documented in docs/algorithms.md).
 struct DoorwayOptions {
   double close_side_m = 0.8;       ///< an echo closer than this (metres) on a side is L or R
   double min_room_travel_m = 1.5;  ///< path length (m) in a room before a new exit counts

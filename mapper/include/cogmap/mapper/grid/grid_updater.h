@@ -33,14 +33,14 @@ struct GridOptions {
   /// +0.5 on neighbours). Figs. A.2-A.3 (1.5 and 1.5: +3 / +1.5) fatten every wall by a cell
   /// toward the robot, because the neighbour on the beam nets +0.5 per reading, and the clean
   /// map then keeps that inner face: measured 0.12 m median wall error against 0.05 m or less
-  /// on the same synthetic room (docs/algorithms/10-grids.md). Fig. A.2 remains selectable.
+  /// on the same synthetic room (docs/algorithms.md). Fig. A.2 remains selectable.
   double hit_increment = 2.5;        ///< thesis §2.2.3 (+3 in total on the hit cell)
   double neighbour_increment = 0.5;  ///< each of the 3x3 incl. the hit cell, thesis §2.2.3
   /// MHIMM: how far along its beam a reading WITHOUT an echo clears (metres; capped at w).
   /// Thesis Fig. A.3 clears to the window edge for every reading beyond w, echo or not; a
   /// specular sonar returns nothing from a wall met at more than ~22° from its normal, so a
   /// no-echo beam usually crosses a wall it did not see and Fig. A.3 erodes exactly the walls
-  /// parallel to the robot's path. -1 = the thesis (clear to w). docs/algorithms/10-grids.md.
+  /// parallel to the robot's path. -1 = the thesis (clear to w). docs/algorithms.md.
   double no_echo_clear_m = -1.0;
   double miss_decrement = 1.0;       ///< decrement along the beam, thesis §2.2.3
   double bayes_max_occupied = 0.98;  ///< MO, thesis Table 2.1 (Moravec's maximum occupancy)

@@ -10,7 +10,7 @@ namespace cogmap::mapper {
 struct LineDirection;
 
 /// Folds an angle (radians) modulo π/2 into [−π/4, π/4): the direction equivalent to it under
-/// a quarter turn. This is what Eqs. 3.28-3.31 intend (see docs/algorithms/40-em-localization.md).
+/// a quarter turn. This is what Eqs. 3.28-3.31 intend (see docs/algorithms.md).
 double fold_direction_rad(double angle_rad);
 
 /// Weighted mean direction modulo π/2 (the "4θ trick": average unit vectors at 4θ, whose angle

@@ -1,6 +1,6 @@
 #pragma once
 /// Expectation Maximization over wall directions (thesis §3.1.9-3.1.10, Figs. A.6-A.7).
-/// docs/algorithms/40-em-localization.md maps every equation to the code below.
+/// docs/algorithms.md maps every equation to the code below.
 
 #include <span>
 #include <vector>
@@ -53,7 +53,7 @@ struct EmResult {
 
 /// Where a sample came from. The thesis pools s and m and lets EM sort them out; when the
 /// source is known (it always is in the Localizer) a labelled sample is explained only by its
-/// own component or by clutter. docs/algorithms/40-em-localization.md says why.
+/// own component or by clutter. docs/algorithms.md says why.
 enum class EmSource : unsigned char { kUnknown, kS, kM };
 
 /// Runs E- and M-steps (Eqs. 3.13-3.14, 3.19-3.21) from `initial` on weighted samples.

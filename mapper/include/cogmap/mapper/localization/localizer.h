@@ -1,6 +1,6 @@
 #pragma once
 /// Heading correction between consecutive ASRs from their wall directions (thesis §3.1.9).
-/// docs/algorithms/40-em-localization.md explains each step and where we depart from the text.
+/// docs/algorithms.md explains each step and where we depart from the text.
 
 #include <optional>
 #include <span>

@@ -2,7 +2,7 @@
 /// Navigation on the live map (thesis §1.1.4, §2.2.3): VFH obstacle avoidance, a route
 /// follower through waypoints and an explorer. Works the same on the simulator and the real
 /// robot because it sees only the seam and the mapper's grid. The algorithms, every option and
-/// the deviations from the thesis are explained in docs/algorithms/60-navigation.md.
+/// the deviations from the thesis are explained in docs/algorithms.md.
 
 #include <cstddef>
 #include <cstdint>
