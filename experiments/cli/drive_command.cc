@@ -89,6 +89,12 @@ int drive(const DriveArgs& args) {
     return kExitBadInput;
   }
   if (args.duration_s) experiment.duration_s = *args.duration_s;
+  if (experiment.controller.steer_by_truth) {
+    // A real robot has no true pose: steer by the mapper's estimate, as a real run must.
+    std::cerr << "cogmap drive: controller.pose: truth is for simulated runs; steering by the "
+                 "estimate\n";
+    experiment.controller.steer_by_truth = false;
+  }
   if (args.controller == "explore")
     experiment.controller.type = experiments::ControllerKind::kExplore;
   if (args.controller == "route") experiment.controller.type = experiments::ControllerKind::kRoute;

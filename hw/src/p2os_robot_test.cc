@@ -233,7 +233,7 @@ TEST(P2osRobotPty, SilentRobotComesBackWithoutLosingMotion) {
   EXPECT_GE(stats.left_open_recoveries, 1);  // it was still open when it came back
   ASSERT_GE(frames.size(), 20u);
   // The body never stopped (SYNC0 doubles as PULSE), and no motion was thrown away.
-  EXPECT_NEAR(frames.back().odometry.x_m, body.distance_m(), 0.1);
+  EXPECT_NEAR(frames.back().odometry.x_m, body.distance_m(), 0.15);  // the gap alone is 0.9 m
 }
 
 TEST(P2osRobotPty, ControllerResetRebasesOdometryWithoutJump) {

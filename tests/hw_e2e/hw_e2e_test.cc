@@ -52,7 +52,9 @@ constexpr double kDurationS = 75.0;
 experiments::Experiment two_rooms() {
   return experiments::load_experiment(
       source_dir() / "experiments" / "two_rooms.yaml",
-      {"duration_s=" + std::to_string(kDurationS), "output.figures=false"});
+      {"duration_s=" + std::to_string(kDurationS), "output.figures=false",
+       // Over the wire there is no true pose to steer by: both runs steer by the estimate.
+       "controller.pose=estimate"});
 }
 
 TEST(HwEndToEnd, ServedOverP2osMapsLikeDirectAndReplaysIdentically) {
@@ -114,6 +116,7 @@ TEST(HwEndToEnd, ServedOverP2osMapsLikeDirectAndReplaysIdentically) {
   hw::LogRobot replay(log_path);
   experiments::Experiment replay_experiment = experiment;
   replay_experiment.controller.type = experiments::ControllerKind::kNone;
+  replay_experiment.controller.steer_by_truth = false;
   replay_experiment.duration_s = replay.last_time_s() + 1.0;
   experiments::RunOptions replay_options;
   replay_options.out_dir = out_dir("replay_run");
