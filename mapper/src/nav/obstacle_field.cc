@@ -1,6 +1,7 @@
 #include "nav/obstacle_field.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace cogmap::mapper::nav {
 
@@ -14,6 +15,10 @@ void ObstacleField::build(const Point2& center, const GridUpdater* grid,
   const auto inside = [&](CellIndex c) {
     return (geometry_.center_of(c) - center).squaredNorm() <= window_sq;
   };
+  // Near the robot only the recent echoes count: every echo is painted on its beam's axis, so
+  // the grid accumulates a 30° smear that closes 1 m openings; the memory holds only the last
+  // few seconds, from nearby, where the smear is small.
+  const double near_sq = vfh_.grid_min_range_m * std::abs(vfh_.grid_min_range_m);
   if (grid) {
     const CellIndex lo = geometry_.cell_of(center - Point2(window, window));
     const CellIndex hi = geometry_.cell_of(center + Point2(window, window));
@@ -21,7 +26,9 @@ void ObstacleField::build(const Point2& center, const GridUpdater* grid,
       for (int x = std::max(lo.x, 0); x <= std::min(hi.x, geometry_.width() - 1); ++x) {
         const CellIndex c{x, y};
         const float value = grid->histogram_at(c);
-        if (value > vfh_.occupied_above && inside(c)) cells_[{x, y}] = value;
+        if (value <= vfh_.occupied_above || !inside(c)) continue;
+        if ((geometry_.center_of(c) - center).squaredNorm() < near_sq) continue;
+        cells_[{x, y}] = value;
       }
     }
   }

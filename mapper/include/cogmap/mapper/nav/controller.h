@@ -81,6 +81,9 @@ struct VfhOptions {
   int edge_offset_sectors = 4;    ///< wide valley: steer this far inside the nearer edge (20°)
   double heading_weight = 0.2;    ///< cost of turning relative to missing the target (VFH+
                                   ///< μ2/μ1, smaller so the target dominates)
+  double grid_min_range_m = 1.5;  ///< room-grid cells nearer than this are ignored; the recent
+                                  ///< sonar (MemoryOptions) alone decides there, because the
+                                  ///< grid's 30° angular smear closes 1 m doorways (docs)
 };
 
 /// Short-term obstacle memory: raw sonar echoes of the last seconds in the estimate frame,
