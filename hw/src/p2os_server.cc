@@ -45,7 +45,10 @@ void P2osServer::handle(const p2os::Packet& packet) {
         stream_.write(p2os::encode_command(static_cast<Command>(cmd)));
       }
       ++sync_step_;
-      if (sync_step_ == 3) ++stats_.syncs;
+      if (sync_step_ == 3) {
+        std::lock_guard lock(stats_mutex_);
+        ++stats_.syncs;
+      }
       return;
     }
     if (sync_step_ == 3 && cmd == static_cast<std::uint8_t>(Command::kOpen)) {
@@ -64,7 +67,10 @@ void P2osServer::handle(const p2os::Packet& packet) {
     }
     return;
   }
-  ++stats_.commands;
+  {
+    std::lock_guard lock(stats_mutex_);
+    ++stats_.commands;
+  }
   last_command_ = Clock::now();
   const std::optional<int> arg = command_int_argument(packet);
   switch (static_cast<Command>(cmd)) {
@@ -149,7 +155,10 @@ void P2osServer::step_and_send_sip() {
   sip.charge_state = 0;
   sip.rot_vel = static_cast<std::int16_t>(std::lround(w_radps_ * 1800.0 / std::numbers::pi));
   stream_.write(p2os::frame(p2os::encode_sip(sip)));
-  ++stats_.sips_sent;
+  {
+    std::lock_guard lock(stats_mutex_);
+    ++stats_.sips_sent;
+  }
 }
 
 void P2osServer::run(const std::atomic<bool>& stop) {
@@ -173,13 +182,19 @@ void P2osServer::run(const std::atomic<bool>& stop) {
         if (open_ && Clock::now() - last_command_ > options_.watchdog &&
             (v_mps_ != 0.0 || w_radps_ != 0.0)) {
           set_motion(0.0, 0.0);
-          ++stats_.watchdog_stops;
+          {
+            std::lock_guard lock(stats_mutex_);
+            ++stats_.watchdog_stops;
+          }
           if (options_.log) options_.log("watchdog: no command for 2 s, stopping");
         }
         if (open_ && Clock::now() - last_command_ > options_.client_timeout) {
           open_ = false;
           sync_step_ = 0;
-          ++stats_.client_timeouts;
+          {
+            std::lock_guard lock(stats_mutex_);
+            ++stats_.client_timeouts;
+          }
           if (options_.log) options_.log("client silent: closing, waiting for a new handshake");
         }
         step_and_send_sip();
@@ -189,7 +204,10 @@ void P2osServer::run(const std::atomic<bool>& stop) {
       const std::size_t n = stream_.read(buf, std::max(wait, milliseconds(1)));
       if (n > 0) decoder_.feed({buf, n});
       while (auto packet = decoder_.next()) handle(*packet);
-      stats_.bad_bytes = decoder_.dropped_bytes();
+      {
+        std::lock_guard lock(stats_mutex_);
+        stats_.bad_bytes = decoder_.dropped_bytes();
+      }
     }
   } catch (const StreamClosed&) {
     // The client hung up: the robot stops, as a real one does when its watchdog fires.

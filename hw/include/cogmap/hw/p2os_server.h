@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -61,8 +62,11 @@ class P2osServer {
   /// forget the sync and restart its position counters at zero (as a real controller does).
   void request_reset() { reset_requested_ = true; }
 
-  /// Counters so far (read after run() returns, or racy-but-harmless while running).
-  P2osServerStats stats() const { return stats_; }
+  /// Counters so far; thread-safe.
+  P2osServerStats stats() const {
+    std::lock_guard lock(stats_mutex_);
+    return stats_;
+  }
 
  private:
   void handle(const p2os::Packet& packet);
@@ -84,6 +88,7 @@ class P2osServer {
   mapper::Pose2 last_odometry_;
   bool have_odometry_ = false;
   std::atomic<bool> reset_requested_{false};
+  mutable std::mutex stats_mutex_;  // stats() is read from other threads while run() counts
   P2osServerStats stats_;
 };
 
