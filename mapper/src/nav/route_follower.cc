@@ -1,6 +1,7 @@
 // The route follower: waypoints in the world frame, steered through VFH (thesis §2.2.3).
 
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "cogmap/mapper/nav/controller.h"
@@ -32,6 +33,7 @@ class RouteFollower final : public Controller {
       // This waypoint has defeated every recovery: give it up and try the next one.
       ++index_;
       attempts_ = 0;
+      leg_start_ = input.pose.translation();  // the next leg starts where it gave up
       ++core_.trace().skipped_waypoints;
       advance(input.pose.translation());
       if (done()) return core_.stop(NavMode::kDone);
@@ -48,17 +50,34 @@ class RouteFollower final : public Controller {
 
  private:
   void advance(const Point2& position) {
-    while (!done() && (waypoints_[index_] - position).norm() < options_.waypoint_tolerance_m) {
+    if (!leg_start_) leg_start_ = position;
+    while (!done() && reached(position)) {
+      leg_start_ = waypoints_[index_];
       ++index_;
       attempts_ = 0;
     }
     core_.trace().waypoint_index = index_;
   }
 
+  /// Within the tolerance, or across the line through the waypoint perpendicular to the leg
+  /// (from the previous waypoint, or the start) and within pass_half_width_m of the waypoint.
+  bool reached(const Point2& position) const {
+    const Point2 to_robot = position - waypoints_[index_];
+    if (to_robot.norm() < options_.waypoint_tolerance_m) return true;
+    const Point2 leg = waypoints_[index_] - *leg_start_;
+    const double length = leg.norm();
+    if (options_.pass_half_width_m <= 0.0 || length < 1e-9) return false;
+    const Point2 along = leg / length;
+    const double ahead = to_robot.dot(along);  // > 0: beyond the perpendicular line
+    const double lateral = std::abs(along.x() * to_robot.y() - along.y() * to_robot.x());
+    return ahead >= 0.0 && lateral <= options_.pass_half_width_m;
+  }
+
   RouteOptions options_;
   std::vector<Point2> waypoints_;
   std::size_t index_ = 0;
-  int attempts_ = 0;  // recoveries spent on the current waypoint
+  int attempts_ = 0;                 // recoveries spent on the current waypoint
+  std::optional<Point2> leg_start_;  // where the current leg began (previous waypoint or start)
   NavCore core_;
 };
 

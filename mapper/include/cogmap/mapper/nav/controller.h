@@ -122,6 +122,11 @@ struct RecoveryOptions {
 struct RouteOptions {
   double speed_mps = 0.5;             ///< thesis §4: the robot drove at 0.5 m/s
   double waypoint_tolerance_m = 0.4;  ///< a waypoint counts as reached this close
+  double pass_half_width_m = 1.0;     ///< ...or passed once the robot crosses the line through
+                                      ///< it perpendicular to the route leg within this of it:
+                                      ///< steering by a drifting estimate, a waypoint in a
+                                      ///< doorway may lie 0.2-0.5 m off the opening actually
+                                      ///< driven through; 0 disables
   double max_turn_rate_radps = 1.0;
   VfhOptions vfh;
   double stuck_time_s = 4.0;  ///< no progress for this long triggers recovery
