@@ -257,6 +257,30 @@ TEST(P2osRobotPty, ControllerResetRebasesOdometryWithoutJump) {
   EXPECT_GT(frames.back().odometry.x_m, frames[10].odometry.x_m);  // kept going after reset
 }
 
+TEST(P2osRobotPty, SubclassP2at8PlusSelectsItsConversionFactors) {
+  P2osServerOptions so;
+  so.identity = {"plus", "Pioneer", "p2at8+"};  // 0.465 mm per position unit, 1 mm sonar unit
+  PtyRobot served(so);
+  served.start();
+  P2osRobot robot(served.client(), fast_options());
+  EXPECT_EQ(robot.identity().subclass, "p2at8+");
+  robot.command({0.5, 0.0});
+  const auto frames = drive_for(robot, 1200ms);
+  robot.shutdown();
+  ASSERT_GE(frames.size(), 8u);
+  for (const auto& f : frames) {
+    for (const auto& r : f.sonar) {
+      if (r.echo) {
+        EXPECT_NEAR(r.range_m, 1.0 + 0.1 * r.index, 0.0005);  // 1 mm units
+      }
+    }
+  }
+  // Body and client agree on distance only if both used 0.465 mm per unit.
+  const double per_frame_m = (frames.back().odometry.x_m - frames[3].odometry.x_m) /
+                             static_cast<double>(frames.size() - 4);
+  EXPECT_NEAR(per_frame_m, 0.05, 0.002);  // 0.5 m/s x 0.1 s
+}
+
 TEST(P2osRobotPty, NoAnswerThrowsNamingTheDevice) {
   auto pty = open_pty();  // nobody serves the master
   P2osRobotOptions o = fast_options();
