@@ -26,6 +26,7 @@ class StreamClosed : public StreamError {
   using StreamError::StreamError;
 };
 
+/// A bidirectional byte link with bounded blocking (serial port, socket, pty, memory).
 class ByteStream {
  public:
   virtual ~ByteStream() = default;

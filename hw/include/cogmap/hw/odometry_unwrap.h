@@ -11,6 +11,7 @@
 
 namespace cogmap::hw {
 
+/// Raw SIP counters -> continuous odometry pose (metres, radians); one per connection chain.
 class OdometryUnwrapper {
  public:
   explicit OdometryUnwrapper(p2os::ConversionFactors factors = {}) : factors_(factors) {}

@@ -30,6 +30,7 @@ enum class FrameClock {
   kSipCount,  ///< sip_period_s per SIP received (a server running faster than real time)
 };
 
+/// Timeouts and clocks of P2osRobot; defaults suit a real P2-AT (P2AT.md "Connection").
 struct P2osRobotOptions {
   std::chrono::milliseconds sync_reply_timeout{500};   ///< wait per SYNC echo
   int sync_attempts = 8;                               ///< SYNC0-2 rounds before giving up
@@ -56,6 +57,7 @@ struct P2osStats {
   int resets = 0;                    ///< 0xFF reset packets received
 };
 
+/// mapper::Robot over P2OS; thread-safe between the caller and its own I/O thread.
 class P2osRobot final : public mapper::Robot {
  public:
   /// Handshakes over `stream` (SYNC0-2, OPEN, ENABLE 1, SONAR 1) and starts the I/O thread.

@@ -19,6 +19,7 @@
 
 namespace cogmap::hw {
 
+/// What the served robot claims to be and how fast it runs.
 struct P2osServerOptions {
   p2os::RobotIdentity identity{"cogmap-sim", "Pioneer", "p2at"};
   /// Wall-clock time between SIPs; each SIP advances the body one next_frame() (whose own
@@ -49,6 +50,7 @@ struct P2osServerStats {
   std::uint64_t bad_bytes = 0;        ///< discarded by the decoder
 };
 
+/// The robot side of one P2OS link; run() serves until stopped or the client hangs up.
 class P2osServer {
  public:
   /// `stream` is the robot's end of the link; `body` moves and senses. Neither is owned.
