@@ -1,0 +1,57 @@
+// Issue #3's smoke test: in every thesis world the robot completes its experiment's route
+// within the experiment's time limit, through the real simulator, navigation, mapper and runner
+// (figures off), and leaves one ASR per room it was meant to map.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/runner.h"
+
+namespace cogmap::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path source_dir() {
+  const char* src = std::getenv("COGMAP_SOURCE_DIR");
+  return src ? fs::path(src) : fs::path(__FILE__).parent_path().parent_path().parent_path();
+}
+
+struct RouteCase {
+  std::string experiment;
+  int min_asrs;  ///< rooms the route visits (doorway ASRs) or its length / 4 m (distance ASRs)
+};
+
+class RouteSmoke : public ::testing::TestWithParam<RouteCase> {};
+
+TEST_P(RouteSmoke, CompletesTheRouteWithinTheTimeLimit) {
+  const RouteCase& c = GetParam();
+  const Experiment e = load_experiment(source_dir() / "experiments" / (c.experiment + ".yaml"));
+  RunOptions o;
+  o.out_dir = fs::path(::testing::TempDir()) / ("route_smoke_" + c.experiment);
+  o.figures = false;
+  fs::remove_all(o.out_dir);
+  (void)run_experiment(e, o);
+  std::ifstream in(o.out_dir / "metrics.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const nlohmann::json m = nlohmann::json::parse(text.str());
+  EXPECT_TRUE(m["route_completed"].get<bool>()) << c.experiment;
+  EXPECT_LT(m["timing"]["sim_time_s"].get<double>(), e.duration_s) << c.experiment;
+  EXPECT_GE(m["asr_count"].get<int>(), c.min_asrs) << c.experiment;
+}
+
+INSTANTIATE_TEST_SUITE_P(ThesisWorlds, RouteSmoke,
+                         ::testing::Values(RouteCase{"two_rooms", 2}, RouteCase{"nine_rooms", 9},
+                                           RouteCase{"three_room_slam", 3},
+                                           RouteCase{"hallway_loop", 60},
+                                           RouteCase{"small_clutter", 1}),
+                         [](const auto& info) { return info.param.experiment; });
+
+}  // namespace
+}  // namespace cogmap::experiments
