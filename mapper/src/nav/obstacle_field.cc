@@ -15,10 +15,14 @@ void ObstacleField::build(const Point2& center, const GridUpdater* grid,
   const auto inside = [&](CellIndex c) {
     return (geometry_.center_of(c) - center).squaredNorm() <= window_sq;
   };
-  // Near the robot only the recent echoes count: every echo is painted on its beam's axis, so
-  // the grid accumulates a 30° smear that closes 1 m openings; the memory holds only the last
-  // few seconds, from nearby, where the smear is small.
-  const double near_sq = vfh_.grid_min_range_m * std::abs(vfh_.grid_min_range_m);
+  // Near the robot only the recent echoes count (a grid cell there only confirms one, its
+  // certainty then merged by maximum): every echo is painted on its beam's axis, so the grid
+  // accumulates a 30° smear that closes 1 m openings; the memory holds only the last few
+  // seconds, from nearby, where the smear is small.
+  // Without any remembered echo (sonar off, a replay without sonar) the grid is all there is.
+  const double near_sq =
+      memory.has_echoes() ? vfh_.grid_min_range_m * std::abs(vfh_.grid_min_range_m) : 0.0;
+  std::map<std::pair<int, int>, float> near_grid;  // only where a recent echo confirms it
   if (grid) {
     const CellIndex lo = geometry_.cell_of(center - Point2(window, window));
     const CellIndex hi = geometry_.cell_of(center + Point2(window, window));
@@ -27,8 +31,11 @@ void ObstacleField::build(const Point2& center, const GridUpdater* grid,
         const CellIndex c{x, y};
         const float value = grid->histogram_at(c);
         if (value <= vfh_.occupied_above || !inside(c)) continue;
-        if ((geometry_.center_of(c) - center).squaredNorm() < near_sq) continue;
-        cells_[{x, y}] = value;
+        if ((geometry_.center_of(c) - center).squaredNorm() < near_sq) {
+          near_grid[{x, y}] = value;
+        } else {
+          cells_[{x, y}] = value;
+        }
       }
     }
   }
@@ -40,6 +47,9 @@ void ObstacleField::build(const Point2& center, const GridUpdater* grid,
     if (!inside(c)) continue;
     float& v = echoes[{c.x, c.y}];
     v = std::min(kHistogramMax, v + memory_.hit_value);
+  }
+  for (const auto& [key, value] : near_grid) {
+    if (echoes.count(key) != 0) cells_[key] = value;
   }
   for (const auto& [key, value] : echoes) {
     float& v = cells_[key];

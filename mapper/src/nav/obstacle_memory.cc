@@ -5,10 +5,14 @@
 
 namespace cogmap::mapper::nav {
 
-void ObstacleMemory::push(const Point2& world_m, double expires_s) {
+void ObstacleMemory::push(const Point2& world_m, double expires_s, bool contact) {
   if (options_.max_hits == 0) return;
   while (hits_.size() >= options_.max_hits) hits_.pop_front();
-  hits_.push_back({world_m, expires_s});
+  hits_.push_back({world_m, expires_s, contact});
+}
+
+bool ObstacleMemory::has_echoes() const {
+  return std::any_of(hits_.begin(), hits_.end(), [](const Hit& h) { return !h.contact; });
 }
 
 void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
@@ -28,7 +32,7 @@ void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
     // The echo lies on the transducer's axis (the HIMM convention, thesis §2.2.3).
     const Point2 local(m.x_m + r.range_m * std::cos(m.heading_rad),
                        m.y_m + r.range_m * std::sin(m.heading_rad));
-    push(pose.transform(local), now + options_.keep_s);
+    push(pose.transform(local), now + options_.keep_s, false);
   }
 }
 
@@ -39,7 +43,7 @@ void ObstacleMemory::add_contact(const Pose2& pose, const RobotGeometry& robot, 
   const double x = (forward ? 1.0 : -1.0) * (0.5 * robot.length_m + 0.05);
   const double y = 0.4 * robot.width_m;
   for (const double side : {-y, 0.0, y}) {
-    push(pose.transform(Point2(x, side)), time_s + options_.contact_keep_s);
+    push(pose.transform(Point2(x, side)), time_s + options_.contact_keep_s, true);
   }
 }
 

@@ -16,6 +16,7 @@ class ObstacleMemory {
   struct Hit {
     Point2 world_m{0.0, 0.0};  ///< estimate frame, metres
     double expires_s = 0.0;    ///< forgotten once the frame time reaches this
+    bool contact = false;      ///< a stuck contact, not a sonar echo
   };
 
   explicit ObstacleMemory(const MemoryOptions& options) : options_(options) {}
@@ -31,8 +32,11 @@ class ObstacleMemory {
   /// Hits still remembered, oldest first.
   const std::deque<Hit>& hits() const { return hits_; }
 
+  /// True when at least one sonar echo (not a contact) is remembered: the sonar is live.
+  bool has_echoes() const;
+
  private:
-  void push(const Point2& world_m, double expires_s);
+  void push(const Point2& world_m, double expires_s, bool contact);
 
   MemoryOptions options_;
   std::deque<Hit> hits_;

@@ -98,5 +98,30 @@ TEST(ObstacleField, GridAndMemoryMergeByMaximumNotSum) {
   EXPECT_FLOAT_EQ(field.points()[0].certainty, 15.0f);
 }
 
+// Near the robot the grid only confirms recent echoes (its beam smear closes doorways); far
+// cells and a grid without any live sonar still count.
+TEST(ObstacleField, NearGridCellsCountOnlyWhereARecentEchoConfirmsThem) {
+  const RobotGeometry robot = p2at_geometry();
+  testing::FakeGridUpdater grid{-5.0, -5.0, 10.0, -1.0f};
+  grid.set(0.85, -0.55, 15.0f);  // 1.0 m away: near, no echo there
+  grid.set(2.05, -0.55, 15.0f);  // 2.1 m away: far
+  ObstacleMemory memory{MemoryOptions{}};
+  memory.add_frame(frame(0.0, {{3, 1.0, true, 0.0}}), {}, robot);  // echo near (1.23, 0.20)
+  ObstacleField field(VfhOptions{}, MemoryOptions{});
+  field.build(Point2(0.0, 0.0), &grid, memory);
+  ASSERT_EQ(field.points().size(), 2u);  // the far cell and the echo
+  for (const ObstaclePoint& p : field.points()) EXPECT_GT(p.offset_m.norm(), 1.2);
+
+  ObstacleMemory silent{MemoryOptions{}};
+  field.build(Point2(0.0, 0.0), &grid, silent);
+  EXPECT_EQ(field.points().size(), 2u);  // both grid cells
+
+  VfhOptions off;
+  off.grid_min_range_m = 0.0;
+  ObstacleField all(off, MemoryOptions{});
+  all.build(Point2(0.0, 0.0), &grid, memory);
+  EXPECT_EQ(all.points().size(), 3u);
+}
+
 }  // namespace
 }  // namespace cogmap::mapper::nav

@@ -99,6 +99,33 @@ TEST(RouteFollower, SlowsDownNearAnObstacleAheadAndStopsWhenTooClose) {
   EXPECT_LT(stopped.w_radps, 0.0);  // turning away to the right, toward the target side
 }
 
+// Steering by an offset estimate, the robot drives through the doorway 0.6 m beside the
+// waypoint placed at its centre: crossing the line through the waypoint perpendicular to the
+// leg passes it, so the robot does not turn back to a point it cannot reach.
+TEST(RouteFollower, PassesAWaypointByCrossingItsPerpendicularLine) {
+  Fixture fx;
+  auto c = make_route_follower(RouteOptions{}, {Point2(2.0, 0.0), Point2(4.0, 0.0)});
+  fx.step(*c, 0, {0.0, 0.0, 0.0});   // the first leg starts here, along +x
+  fx.step(*c, 1, {1.95, 0.6, 0.0});  // 0.6 m beside, not yet across
+  EXPECT_EQ(c->trace().waypoint_index, 0u);
+  fx.step(*c, 2, {2.05, 0.6, 0.0});  // across, 0.6 m > tolerance 0.4 m away
+  EXPECT_EQ(c->trace().waypoint_index, 1u);
+
+  // Crossing far beside the waypoint (a detour round an obstacle) does not count.
+  auto far = make_route_follower(RouteOptions{}, {Point2(2.0, 0.0), Point2(4.0, 0.0)});
+  fx.step(*far, 0, {0.0, 0.0, 0.0});
+  fx.step(*far, 1, {2.05, 1.5, 0.0});
+  EXPECT_EQ(far->trace().waypoint_index, 0u);
+
+  // Disabled: only the tolerance counts.
+  RouteOptions off;
+  off.pass_half_width_m = 0.0;
+  auto strict = make_route_follower(off, {Point2(2.0, 0.0), Point2(4.0, 0.0)});
+  fx.step(*strict, 0, {0.0, 0.0, 0.0});
+  fx.step(*strict, 1, {2.05, 0.6, 0.0});
+  EXPECT_EQ(strict->trace().waypoint_index, 0u);
+}
+
 // Closed loop through a 1 m doorway in a wall at x = 2: the target is 2 m beyond it.
 TEST(RouteFollower, DrivesThroughAOneMetreDoorway) {
   Fixture fx;

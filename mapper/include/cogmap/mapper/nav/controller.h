@@ -83,7 +83,8 @@ struct VfhOptions {
                                   ///< μ2/μ1, smaller so the target dominates)
   double grid_min_range_m = 1.5;  ///< room-grid cells nearer than this are ignored; the recent
                                   ///< sonar (MemoryOptions) alone decides there, because the
-                                  ///< grid's 30° angular smear closes 1 m doorways (docs)
+                                  ///< grid's 30° angular smear closes 1 m doorways (docs);
+                                  ///< used only while some echo is remembered
 };
 
 /// Short-term obstacle memory: raw sonar echoes of the last seconds in the estimate frame,
