@@ -54,6 +54,7 @@ struct DriveArgs {
   std::string experiment;
   std::vector<std::string> sets;
   bool no_figures = false;
+  bool sip_clock = false;
 };
 
 experiments::Experiment default_experiment(const std::vector<std::string>& sets) {
@@ -123,6 +124,7 @@ int drive(const DriveArgs& args) {
 
   hw::P2osRobotOptions robot_options;
   robot_options.log = [](const std::string& m) { std::cerr << "cogmap drive: " << m << "\n"; };
+  if (args.sip_clock) robot_options.clock = hw::FrameClock::kSipCount;
   std::unique_ptr<hw::P2osRobot> robot;
   try {
     robot = std::make_unique<hw::P2osRobot>(std::move(stream), robot_options);
@@ -195,6 +197,9 @@ const CommandRegistrar kRegistrar{
           ->take_all()
           ->allow_extra_args(false);
       sub->add_flag("--no-figures", args->no_figures, "skip the PNG figures");
+      sub->add_flag("--sip-clock", args->sip_clock,
+                    "time = 0.1 s per SIP, not the host clock (for `cogmap serve --cycle-ms` "
+                    "faster than real time)");
       sub->callback([&exit_code, args] { exit_code = drive(*args); });
     }};
 

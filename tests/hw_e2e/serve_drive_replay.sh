@@ -12,7 +12,7 @@ trap 'kill $serve_pid 2>/dev/null || true' EXIT
 for _ in $(seq 50); do [[ -s "$out/serve.out" ]] && break; sleep 0.1; done
 dev=$(head -1 "$out/serve.out")
 [[ -e "$dev" ]] || { echo "serve printed no device: '$dev'"; exit 1; }
-"$cogmap" drive --port "$dev" --experiment "$exp" --duration 8 --record "$out/live.log" \
+"$cogmap" drive --port "$dev" --sip-clock --experiment "$exp" --duration 16 --record "$out/live.log" \
   --out "$out/live" --no-figures
 "$cogmap" replay "$out/live.log" --experiment "$exp" --out "$out/replay" --no-figures
 cmp "$out/live/map_segments.csv" "$out/replay/map_segments.csv"
