@@ -6,11 +6,11 @@
 #include <sstream>
 #include <thread>
 
-#include "cogmap/experiments/atomic_file.h"
 #include "cogmap/experiments/progress.h"
 #include "cogmap/experiments/runner.h"
 #include "cogmap/experiments/sweep_plots.h"
 #include "cogmap/experiments/sweep_runner.h"
+#include "cogmap/mapper/io/asr_json.h"
 #include "command_registry.h"
 
 namespace cogmap::cli {
@@ -57,7 +57,7 @@ int merge(const SweepArgs& args) {
       tables.emplace_back(f.string(), experiments::parse_csv(read_text(f), f.string()));
     }
     const experiments::ResultsTable merged = experiments::merge_results(tables);
-    experiments::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
+    mapper::io::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
     std::cout << "cogmap sweep: merged " << tables.size() << " files, " << merged.rows.size()
               << " runs into " << (out / "results.csv").string() << "\n";
     plot(merged, out, !args.no_plots);

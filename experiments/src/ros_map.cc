@@ -1,7 +1,7 @@
 #include "cogmap/experiments/ros_map.h"
 
-#include "cogmap/experiments/atomic_file.h"
 #include "cogmap/experiments/number_format.h"
+#include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
 
@@ -40,8 +40,9 @@ std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string
 
 void write_ros_map(const mapper::HistogramGrid& grid, double occupied_threshold,
                    const std::filesystem::path& dir, const std::string& stem) {
-  write_file_atomic(dir / (stem + ".pgm"), histogram_to_pgm(grid, occupied_threshold));
-  write_file_atomic(dir / (stem + ".yaml"), ros_map_yaml(grid.geometry(), stem + ".pgm"));
+  mapper::io::write_file_atomic(dir / (stem + ".pgm"), histogram_to_pgm(grid, occupied_threshold));
+  mapper::io::write_file_atomic(dir / (stem + ".yaml"),
+                                ros_map_yaml(grid.geometry(), stem + ".pgm"));
 }
 
 }  // namespace cogmap::experiments

@@ -7,7 +7,6 @@
 #include <regex>
 #include <system_error>
 
-#include "cogmap/experiments/atomic_file.h"
 #include "cogmap/experiments/ros_map.h"
 #include "cogmap/experiments/run_outputs.h"
 #include "cogmap/mapper/io/asr_json.h"
@@ -115,7 +114,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   const bool figures = want_figures && COGMAP_EXPERIMENTS_HAVE_RENDER;
   try {
     clear_run_outputs(out);
-    write_file_atomic(out / "experiment.yaml", experiment.resolved_yaml);
+    mapper::io::write_file_atomic(out / "experiment.yaml", experiment.resolved_yaml);
   } catch (const std::exception& e) {
     throw RunError(std::string("cannot prepare the run directory: ") + e.what());
   }
@@ -244,13 +243,13 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       m.localization = evaluate_trajectory(session.rows);
     }
 
-    write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows));
-    write_file_atomic(out / "map_segments.csv", segments_csv(corrected));
-    write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry));
+    mapper::io::write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows));
+    mapper::io::write_file_atomic(out / "map_segments.csv", segments_csv(corrected));
+    mapper::io::write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry));
     mapper::io::write_asr_graph_json(mapper.graph(), out / "asr_graph.json");
     SvgMap svg{corrected, truth ? truth->surfaces : std::vector<mapper::Segment>{},
                subsample_path(est_path, 0.05), labels};
-    write_file_atomic(out / "map.svg", map_svg(svg));
+    mapper::io::write_file_atomic(out / "map.svg", map_svg(svg));
 
 #if COGMAP_EXPERIMENTS_HAVE_RENDER
     if (figures) {
@@ -272,7 +271,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     }
 #endif
     // Last: its presence marks the run as finished (sweeps skip finished runs).
-    write_file_atomic(out / "metrics.json", metrics_json_text(m));
+    mapper::io::write_file_atomic(out / "metrics.json", metrics_json_text(m));
   } catch (const std::exception& e) {
     throw RunError(std::string("writing the results failed: ") + e.what());
   }

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <thread>
 
-#include "cogmap/experiments/atomic_file.h"
 #include "cogmap/experiments/progress.h"
+#include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -101,7 +101,7 @@ SweepOutcome run_sweep(const SweepSpec& spec, const std::vector<PlannedRun>& pla
   for (const SweepAxis& a : spec.vary) keys.push_back(a.key);
   outcome.results = build_results_table(runs, keys, metrics);
   outcome.results_csv = options.out_dir / results_file_name(options.shard);
-  write_file_atomic(outcome.results_csv, to_csv(outcome.results));
+  mapper::io::write_file_atomic(outcome.results_csv, to_csv(outcome.results));
   return outcome;
 }
 

@@ -5,8 +5,8 @@
 #include <atomic>
 #include <fstream>
 
-#include "cogmap/experiments/atomic_file.h"
 #include "cogmap/experiments/sweep_plots.h"
+#include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -33,9 +33,10 @@ Fixture make_fixture(const std::string& name) {
 // A stand-in run: metrics depend only on the run's inputs.
 void fake_run(const PlannedRun& p) {
   const double cell = p.experiment.mapper.grid_options.cell_scale_mm;
-  write_file_atomic(p.dir / "metrics.json", "{\"asr_count\": " + std::to_string(p.experiment.seed) +
-                                                ", \"map\": {\"wall_error_median_m\": " +
-                                                std::to_string(cell / 1000.0) + "}}\n");
+  mapper::io::write_file_atomic(
+      p.dir / "metrics.json",
+      "{\"asr_count\": " + std::to_string(p.experiment.seed) +
+          ", \"map\": {\"wall_error_median_m\": " + std::to_string(cell / 1000.0) + "}}\n");
 }
 
 TEST(SweepRunner, RunsEveryRunInParallelAndWritesResults) {

@@ -35,6 +35,9 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   static std::atomic<unsigned long> counter{0};
   const std::filesystem::path dir =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);  // a missing folder is made, not an error
+  if (ec) throw std::runtime_error(dir.string() + ": cannot create directory: " + ec.message());
   const std::filesystem::path temp =
       dir / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
              std::to_string(counter.fetch_add(1)));

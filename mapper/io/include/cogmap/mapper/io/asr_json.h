@@ -42,7 +42,9 @@ AsrGraph read_asr_graph_json(const std::filesystem::path& path);
 
 /// Replaces `path` with `content` so that a crash at any moment leaves either the old file or
 /// the new one, never a mix: write a temp file in the same directory, fsync it, rename it over
-/// `path`, fsync the directory. Throws std::runtime_error naming the path on any failure.
+/// `path`, fsync the directory. Missing parent directories are created. Temp names are unique
+/// per process and call, so threads may write side by side. Throws std::runtime_error naming
+/// the path on any failure.
 void write_file_atomic(const std::filesystem::path& path, std::string_view content);
 
 /// Reads a whole file; throws std::runtime_error naming the path when it cannot.
