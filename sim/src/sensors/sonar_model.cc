@@ -54,7 +54,12 @@ SonarEcho SonarModel::geometric_echo(const SonarScene& scene, const mapper::Pose
   cone.axis_rad = true_pose.theta_rad + m.heading_rad;
   cone.half_beam_rad = 0.5 * geometry_.sonar_beam_width_rad;
   cone.max_range_m = geometry_.sonar_max_range_m;
-  return sonar_detail::first_echo(scene, cone, options_);
+  // The scene is normally the same object every ping (SimRobot builds it once), so the check is
+  // one byte comparison; the index is rebuilt only when the geometry really changed.
+  if (!index_ || !index_->matches(scene)) {
+    index_ = std::make_shared<const sonar_detail::SceneIndex>(scene);
+  }
+  return sonar_detail::first_echo(scene, cone, options_, index_.get());
 }
 
 mapper::SonarReading SonarModel::ping(const SonarScene& scene, const mapper::Pose2& true_pose,

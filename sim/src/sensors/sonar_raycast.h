@@ -6,6 +6,7 @@
 
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/sim/sonar_model.h"
+#include "sonar_scene_index.h"
 
 namespace cogmap::sim::sonar_detail {
 
@@ -18,9 +19,12 @@ struct RayHit {
 };
 
 /// The first surface hit by the ray origin + t·dir (dir unit) with t in (eps, max_t];
-/// `skip_surface` is ignored (the surface a bounce leaves from).
+/// `skip_surface` is ignored (the surface a bounce leaves from). With `index` (built from a scene
+/// bit-identical to `scene`) only the surfaces near the ray are tested, in the same order, so the
+/// answer is bit-identical to the full scan.
 std::optional<RayHit> first_hit(const SonarScene& scene, const mapper::Point2& origin,
-                                const mapper::Point2& dir, double max_t_m, int skip_surface = -1);
+                                const mapper::Point2& dir, double max_t_m, int skip_surface = -1,
+                                const SceneIndex* index = nullptr);
 
 /// Angle between a unit ray direction and a unit surface normal, folded to [0, π/2], radians.
 double incidence_rad(const mapper::Point2& dir, const mapper::Point2& normal);
@@ -38,6 +42,9 @@ struct Cone {
 
 /// The earliest echo the transducer hears: normal-incidence feet of surfaces inside the cone,
 /// corners inside the cone, rays within the critical angle, and (if enabled) one-bounce multipath.
-SonarEcho first_echo(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options);
+/// `index`, if given, must be built from a scene bit-identical to `scene`; it changes only the
+/// speed, never the echo.
+SonarEcho first_echo(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options,
+                     const SceneIndex* index = nullptr);
 
 }  // namespace cogmap::sim::sonar_detail

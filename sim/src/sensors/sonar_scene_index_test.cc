@@ -1,0 +1,160 @@
+// The spatial index must change only the speed of the sonar model, never a reading: every query
+// below is answered with and without the index and compared bit for bit.
+#include "sonar_scene_index.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "cogmap/sim/world_geometry.h"
+#include "cogmap/sim/world_spec.h"
+#include "sonar_raycast.h"
+
+namespace cogmap::sim {
+namespace {
+
+using mapper::Point2;
+using sonar_detail::first_echo;
+using sonar_detail::first_hit;
+using sonar_detail::SceneIndex;
+
+std::filesystem::path world_path(const std::string& name) {
+  const char* env = std::getenv("COGMAP_SOURCE_DIR");
+  return std::filesystem::path(env ? env : COGMAP_SOURCE_DIR_FALLBACK) / "worlds" / name;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Random rays from random points, including rays exactly along the axes (parallel to most walls)
+// and rays aimed exactly at surface endpoints, the cases where rounding decides.
+void expect_same_hits(const SonarScene& scene, std::uint64_t seed, int rays) {
+  const SceneIndex index(scene);
+  std::mt19937_64 rng(seed);
+  double xmin = 1e9, ymin = 1e9, xmax = -1e9, ymax = -1e9;
+  for (const mapper::Segment& s : scene.surfaces) {
+    for (const Point2& p : {s.a, s.b}) {
+      xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+      ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+    }
+  }
+  std::uniform_real_distribution<double> ux(xmin - 2.0, xmax + 2.0), uy(ymin - 2.0, ymax + 2.0);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
+  std::uniform_real_distribution<double> reach(0.0, 12.0);
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(scene.surfaces.size()) - 1);
+  int hits = 0;
+  for (int k = 0; k < rays; ++k) {
+    const Point2 o(ux(rng), uy(rng));
+    Point2 d;
+    switch (k % 4) {
+      case 0:
+        d = Point2(std::cos(angle(rng)), std::sin(angle(rng)));
+        d.normalize();
+        break;
+      case 1: {  // along an axis
+        const double a = (k / 4 % 4) * 0.5 * std::numbers::pi;
+        d = Point2(std::cos(a), std::sin(a));
+        break;
+      }
+      default: {  // exactly at an endpoint
+        const mapper::Segment& s = scene.surfaces[static_cast<std::size_t>(pick(rng))];
+        const Point2 target = k % 4 == 2 ? s.a : s.b;
+        if ((target - o).norm() == 0.0) continue;
+        d = (target - o).normalized();
+      }
+    }
+    const double max_t = reach(rng);
+    const int skip = k % 7 == 0 ? pick(rng) : -1;
+    const auto full = first_hit(scene, o, d, max_t, skip);
+    const auto fast = first_hit(scene, o, d, max_t, skip, &index);
+    ASSERT_EQ(full.has_value(), fast.has_value()) << "ray " << k;
+    if (!full) continue;
+    ++hits;
+    EXPECT_EQ(full->surface, fast->surface) << "ray " << k;
+    EXPECT_TRUE(same_bits(full->t_m, fast->t_m)) << "ray " << k;
+    EXPECT_TRUE(same_bits(full->point.x(), fast->point.x()) &&
+                same_bits(full->point.y(), fast->point.y()))
+        << "ray " << k;
+  }
+  EXPECT_GT(hits, rays / 10);  // the comparison exercised real hits, not only misses
+}
+
+TEST(SonarSceneIndex, RayHitsMatchFullScanInEveryShippedWorld) {
+  for (const char* name :
+       {"nine_rooms.yaml", "hallway_loop.yaml", "two_rooms.yaml", "small_clutter.yaml"}) {
+    SCOPED_TRACE(name);
+    expect_same_hits(surface_segments(load_world(world_path(name))), 11, 20000);
+  }
+}
+
+TEST(SonarSceneIndex, EchoesMatchFullScanInNineRooms) {
+  const SonarScene scene = surface_segments(load_world(world_path("nine_rooms.yaml")));
+  const SceneIndex index(scene);
+  ASSERT_TRUE(index.matches(scene));
+  SonarModelOptions options;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-0.5, 15.5), angle(-std::numbers::pi, std::numbers::pi);
+  int echoes = 0, multipath = 0;
+  for (int k = 0; k < 20000; ++k) {
+    sonar_detail::Cone cone;
+    cone.origin = Point2(u(rng), u(rng));
+    cone.axis_rad = angle(rng);
+    cone.half_beam_rad = 15.0 * std::numbers::pi / 180.0;
+    cone.max_range_m = 5.0;
+    const SonarEcho full = first_echo(scene, cone, options);
+    const SonarEcho fast = first_echo(scene, cone, options, &index);
+    ASSERT_EQ(full.echo, fast.echo) << "cone " << k;
+    ASSERT_EQ(full.multipath, fast.multipath) << "cone " << k;
+    ASSERT_TRUE(same_bits(full.range_m, fast.range_m)) << "cone " << k;
+    echoes += full.echo;
+    multipath += full.multipath;
+  }
+  EXPECT_GT(echoes, 10000);
+  EXPECT_GT(multipath, 100);  // the bounce paths were compared too
+}
+
+TEST(SonarSceneIndex, CornerQueryMatchesFullScan) {
+  const SonarScene scene = surface_segments(load_world(world_path("nine_rooms.yaml")));
+  ASSERT_FALSE(scene.corners.empty());
+  const SceneIndex index(scene);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.08, 0.08);
+  for (int k = 0; k < 20000; ++k) {
+    const Point2& c = scene.corners[static_cast<std::size_t>(k) % scene.corners.size()];
+    const Point2 p = c + Point2(jitter(rng), jitter(rng));
+    bool full = false;
+    for (const Point2& q : scene.corners) full = full || (q - p).norm() <= 0.05;
+    EXPECT_EQ(full, index.corner_within(p, 0.05)) << "query " << k;
+  }
+}
+
+TEST(SonarSceneIndex, MatchesOnlyTheSameBits) {
+  SonarScene scene;
+  scene.surfaces.push_back({Point2(0.0, 0.0), Point2(1.0, 0.0)});
+  const SceneIndex index(scene);
+  EXPECT_TRUE(index.matches(scene));
+  SonarScene moved = scene;
+  moved.surfaces[0].b.x() = std::nextafter(1.0, 2.0);
+  EXPECT_FALSE(index.matches(moved));
+  SonarScene signed_zero = scene;
+  signed_zero.surfaces[0].a.y() = -0.0;  // == 0.0, but not the same bits
+  EXPECT_FALSE(index.matches(signed_zero));
+  SonarScene more = scene;
+  more.corners.push_back(Point2(0.0, 0.0));
+  EXPECT_FALSE(index.matches(more));
+}
+
+TEST(SonarSceneIndex, EmptySceneHasNoHits) {
+  const SonarScene scene;
+  const SceneIndex index(scene);
+  EXPECT_FALSE(first_hit(scene, Point2(0, 0), Point2(1, 0), 5.0, -1, &index).has_value());
+  EXPECT_FALSE(index.corner_within(Point2(0, 0), 1.0));
+}
+
+}  // namespace
+}  // namespace cogmap::sim
