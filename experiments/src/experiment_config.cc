@@ -135,12 +135,29 @@ std::string_view to_string(ControllerKind kind) {
 }
 
 mapper::MapperOptions parse_mapper_options(const Node& block) {
-  block.expect_keys({"grid", "cell_scale_mm", "occupied_threshold", "vertex_tolerance_cells",
-                     "polyline_gap_cells", "douglas_peucker_cells", "min_abs_correlation",
-                     "window_m", "asr_boundary", "asr_distance_m", "localization",
-                     "door_close_side_m", "min_room_travel_m", "min_room_duration_s",
-                     "max_correction_deg", "no_echo_clear_m", "hit_increment",
-                     "neighbour_increment", "miss_decrement"});
+  block.expect_keys({"grid",
+                     "cell_scale_mm",
+                     "occupied_threshold",
+                     "vertex_tolerance_cells",
+                     "polyline_gap_cells",
+                     "douglas_peucker_cells",
+                     "min_abs_correlation",
+                     "window_m",
+                     "asr_boundary",
+                     "asr_distance_m",
+                     "localization",
+                     "door_close_side_m",
+                     "min_room_travel_m",
+                     "min_room_duration_s",
+                     "max_correction_deg",
+                     "no_echo_clear_m",
+                     "hit_increment",
+                     "neighbour_increment",
+                     "miss_decrement",
+                     "em_odometry_prior",
+                     "em_drift_per_rad",
+                     "em_smear_variance",
+                     "em_min_direction_sigma_deg"});
   mapper::MapperOptions o;
   if (const auto g = block.child("grid")) {
     const std::string name = g->as<std::string>();
@@ -195,6 +212,14 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.doorway.min_room_travel_m =
       number_in(block, "min_room_travel_m", 0.0, 1000.0, o.doorway.min_room_travel_m);
   o.min_room_duration_s = number_in(block, "min_room_duration_s", 0.0, 1e6, o.min_room_duration_s);
+  o.localizer.odometry_prior = block.get_or<bool>("em_odometry_prior", o.localizer.odometry_prior);
+  o.localizer.drift.per_rad_turned =
+      number_in(block, "em_drift_per_rad", 0.0, 1.0, o.localizer.drift.per_rad_turned);
+  o.localizer.smear_variance = block.get_or<bool>("em_smear_variance", o.localizer.smear_variance);
+  o.localizer.min_direction_sigma_rad =
+      number_in(block, "em_min_direction_sigma_deg", 0.0, 45.0,
+                o.localizer.min_direction_sigma_rad * 180.0 / std::numbers::pi) *
+      std::numbers::pi / 180.0;
   if (const auto l = block.child("localization")) {
     const std::string s = l->as<std::string>();
     if (s == "em") {

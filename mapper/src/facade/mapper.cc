@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <deque>
 
 #include "facade/room_recorder.h"
@@ -20,6 +21,24 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 Pose2 interpolate(const Pose2& a, const Pose2& b, double t) {
   return {a.x_m + t * (b.x_m - a.x_m), a.y_m + t * (b.y_m - a.y_m),
           wrap_angle_rad(a.theta_rad + t * wrap_angle_rad(b.theta_rad - a.theta_rad))};
+}
+
+/// The segments of a room's walls whose least-squares fit was accepted (§3.1.8), each as a
+/// two-vertex polyline. A rejected fit stays in the wall as its Douglas-Peucker segment (so the
+/// map keeps it) but is, by the fit's own test, no straight line: it carries no direction.
+std::vector<Polyline> accepted_walls(const AsrTrace& trace) {
+  std::vector<Polyline> out;
+  for (const Polyline& line : trace.fitted) {
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const Point2& a = line[i - 1];
+      const Point2& b = line[i];
+      const bool rejected = std::any_of(
+          trace.rejected.begin(), trace.rejected.end(),
+          [&](const Segment& s) { return (s.a == a && s.b == b) || (s.a == b && s.b == a); });
+      if (!rejected) out.push_back({a, b});
+    }
+  }
+  return out;
 }
 
 RejectedReadings operator+(const RejectedReadings& a, const RejectedReadings& b) {
@@ -42,6 +61,11 @@ struct Mapper::Impl {
   MapperStats stats;
   RejectedReadings rejected_in_finished_rooms;
   std::deque<Asr> resident;  ///< most recent finished rooms, newest last
+  /// The accepted (|ρ| ≥ threshold) walls of the rooms in `resident`, world frame (corrected).
+  std::deque<std::vector<Polyline>> resident_accepted;
+  /// Variance of the heading error left after the last localised room, rad² (the start pose
+  /// is known: 0). Grows by each room's drift, shrinks by (1 - gain) when EM corrects.
+  double heading_variance_rad2 = 0.0;
   RoomListener listener;
   std::optional<Pose2> last_estimate;
   double last_time_s = 0.0;
@@ -84,21 +108,35 @@ struct Mapper::Impl {
   }
 
   std::optional<int> finish_room(double time_s, const std::optional<BoundaryEvent>& leaving);
-  Localization localize(const Asr& asr) const;
+  Localization localize(const Asr& asr, const AsrTrace& trace) const;
 };
 
-Localization Mapper::Impl::localize(const Asr& asr) const {
+Localization Mapper::Impl::localize(const Asr& asr, const AsrTrace& trace) const {
+  // Only walls whose least-squares fit was accepted (§3.1.8) carry a direction: the rejected
+  // DP segments kept in asr.walls for the map are, by the fit's own test, not straight lines.
   std::vector<Polyline> reference;
-  for (const Asr& previous : resident) {
-    for (const Polyline& line : previous.walls) {
-      Polyline world;
-      for (const Point2& p : line) world.push_back(previous.pose.transform(p));
-      reference.push_back(std::move(world));
-    }
+  for (const std::vector<Polyline>& room_walls : resident_accepted) {
+    reference.insert(reference.end(), room_walls.begin(), room_walls.end());
+  }
+  // Odometry's prior on the rotation since the reference was corrected: the drift of the
+  // turns and the distance driven in this room (its path, entry and exit headings).
+  const std::optional<double> exit_heading =
+      asr.exits.size() > 1 ? std::optional<double>(asr.exits[1].heading_rad) : std::nullopt;
+  const HeadingDriftModel& drift = options.localizer.drift;
+  const double turned =
+      path_rotation_rad(asr.path, asr.exits.front().heading_rad, exit_heading, drift.chord_m);
+  RotationPrior prior;  // none: EM's answer as it is
+  if (options.localizer.odometry_prior) {
+    // The heading error the reference rooms were left with (carried, Kalman-style) plus the
+    // drift accumulated in this room: a correction refused earlier widens the next prior, so a
+    // drift that builds up over many rooms is eventually admitted.
+    const double room_sigma = heading_drift_sigma_rad(drift, turned, path_length_m(asr.path));
+    prior.sigma_rad = std::sqrt(heading_variance_rad2 + room_sigma * room_sigma);
   }
   // The new room's local frame is the current estimate frame, so its walls are already in
   // world-estimate coordinates.
-  return localizer.estimate(reference, asr.walls);
+  const Localization fix = localizer.estimate(reference, accepted_walls(trace), prior);
+  return fix;
 }
 
 std::optional<int> Mapper::Impl::finish_room(double time_s,
@@ -110,8 +148,7 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
 
   Asr asr;
   asr.id = room.id();
-  asr.walls = trace_in.fitted;
-  for (const Segment& s : trace_in.rejected) asr.walls.push_back({s.a, s.b});
+  asr.walls = trace_in.fitted;  // rejected fits stay in as their DP segments (§3.1.8 reading)
   asr.exits.push_back(room.entry());
   if (leaving) {
     asr.exits.push_back({leaving->exit_center, leaving->exit_width_m, leaving->heading_rad, {}});
@@ -129,8 +166,12 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   Pose2 room_correction;  // identity
   if (options.localization == LocalizationKind::kEm && !resident.empty()) {
     const auto em_start = std::chrono::steady_clock::now();
-    const Localization fix = localize(asr);
+    const Localization fix = localize(asr, trace_in);
     stats.localization_time_s += seconds_since(em_start);
+    if (options.localizer.odometry_prior && std::isfinite(fix.prior_sigma_rad)) {
+      const double prior_var = fix.prior_sigma_rad * fix.prior_sigma_rad;
+      heading_variance_rad2 = fix.applied ? (1.0 - fix.gain) * prior_var : prior_var;
+    }
     if (fix.applied) {
       room_correction = rotation_about(asr.reference_point, fix.rotation_rad);
       asr.heading_correction_rad = fix.rotation_rad;
@@ -139,6 +180,12 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   asr.pose = room_correction;
   // Everything mapped from here on is corrected too: the robot's estimate turns with the room.
   correction = room_correction.compose(correction);
+  std::vector<Polyline> accepted_world = accepted_walls(trace_in);
+  for (Polyline& line : accepted_world) {
+    for (Point2& p : line) p = asr.pose.transform(p);
+  }
+  resident_accepted.push_back(std::move(accepted_world));
+  if (resident_accepted.size() > kResidentRooms) resident_accepted.pop_front();
 
   store.save(asr);
   graph.add_node({asr.id, asr.pose, asr.pose.transform(asr.reference_point)});

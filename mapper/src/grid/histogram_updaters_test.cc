@@ -19,11 +19,13 @@ using testing::single_forward_sonar;
 constexpr Pose2 kRobot{0.05, 0.05, 0.0};
 constexpr CellIndex kRobotCell{60, 60};
 
-/// The increments of thesis Figs. A.2-A.3 (+1.5 on the cell, +1.5 on each of the 3x3) and a
-/// 2 m window, which the exact values below follow; the defaults are checked separately.
+/// The increments of thesis Figs. A.2-A.3 (+1.5 on the cell, +1.5 on each of the 3x3), a 2 m
+/// window and Fig. A.3's clearing of no-echo beams to the window edge, which the exact values
+/// below follow; the defaults are checked separately.
 GridOptions fig_a2_options() {
   GridOptions options;
   options.window_m = 2.0;
+  options.no_echo_clear_m = -1.0;
   options.hit_increment = 1.5;
   options.neighbour_increment = 1.5;
   return options;

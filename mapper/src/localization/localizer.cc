@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -20,11 +22,78 @@ double total_length_m(std::span<const LineDirection> directions) {
   return sum;
 }
 
+double gauss(double x, double mu, double sigma) {
+  const double z = (x - mu) / sigma;
+  return std::exp(-0.5 * z * z) / sigma;  // the common 1/√(2π) cancels against clutter below
+}
+
+/// Variance of the weighted mean μ_k: σ_k² / n_k, with n_k = (Σ q w)² / Σ (q w)² the Kish
+/// effective number of samples EM gave to component k (q = responsibility of k, w = weight).
+double mean_variance(std::span<const double> x, std::span<const double> w,
+                     std::span<const EmSource> sources, EmSource own, const GaussianMixture2& g,
+                     double clutter_range_rad, double min_sigma_rad) {
+  const bool is_s = own == EmSource::kS;
+  const double pi = is_s ? g.pi_s : g.pi_m, mu = is_s ? g.mu_s : g.mu_m;
+  const double sigma_fit = is_s ? g.sigma_s : g.sigma_m;
+  const double sigma = std::max(sigma_fit, min_sigma_rad);
+  constexpr double kSqrt2Pi = 2.5066282746310002;
+  const double clutter =
+      clutter_range_rad > 0.0 ? g.pi_clutter * kSqrt2Pi / clutter_range_rad : 0.0;
+  double sum = 0.0, sum_sq = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (sources[i] != own) continue;
+    const double p = pi * gauss(x[i], mu, sigma_fit);
+    const double q = p + clutter > 0.0 ? p / (p + clutter) : 0.0;
+    sum += q * w[i];
+    sum_sq += (q * w[i]) * (q * w[i]);
+  }
+  if (sum <= 0.0) return std::numeric_limits<double>::infinity();
+  return sigma * sigma * sum_sq / (sum * sum);
+}
+
 }  // namespace
+
+double path_length_m(std::span<const Point2> path) {
+  double sum = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) sum += (path[i] - path[i - 1]).norm();
+  return sum;
+}
+
+double path_rotation_rad(std::span<const Point2> path, double start_heading_rad,
+                         std::optional<double> end_heading_rad, double chord_m) {
+  double heading = start_heading_rad, turned = 0.0;
+  std::size_t from = 0;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const Point2 chord = path[i] - path[from];
+    if (chord.norm() < chord_m) continue;
+    const double next = std::atan2(chord.y(), chord.x());
+    turned += std::abs(std::remainder(next - heading, 2.0 * std::numbers::pi));
+    heading = next;
+    from = i;
+  }
+  if (end_heading_rad) {
+    turned += std::abs(std::remainder(*end_heading_rad - heading, 2.0 * std::numbers::pi));
+  }
+  return turned;
+}
+
+double heading_drift_sigma_rad(const HeadingDriftModel& model, double rotation_rad,
+                               double distance_m) {
+  const double turn = model.per_rad_turned * std::abs(rotation_rad);
+  return std::sqrt(model.floor_rad * model.floor_rad + turn * turn +
+                   model.rad_per_sqrt_m * model.rad_per_sqrt_m * std::max(distance_m, 0.0));
+}
 
 Localization Localizer::estimate(std::span<const Polyline> reference_world,
                                  std::span<const Polyline> current_world) const {
+  return estimate(reference_world, current_world, RotationPrior{});
+}
+
+Localization Localizer::estimate(std::span<const Polyline> reference_world,
+                                 std::span<const Polyline> current_world,
+                                 const RotationPrior& prior) const {
   Localization out;
+  out.prior_sigma_rad = prior.sigma_rad;
   // s: the new room's walls; m: the reference rooms' walls (the thesis's m is "the centre point
   // of the exit locations"; see docs for why we use the reference walls instead).
   const std::vector<LineDirection> s = line_directions(current_world);
@@ -81,9 +150,30 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
   // Undo the centring, and turn the new room's direction onto the reference's.
   out.reference_direction_rad = fold_direction_rad(out.em.mixture.mu_m + mode_m);
   out.current_direction_rad = fold_direction_rad(out.em.mixture.mu_s + mode_m);
-  out.rotation_rad = fold_direction_rad(out.em.mixture.mu_m - out.em.mixture.mu_s);
-  out.applied = std::abs(out.rotation_rad) <= options_.max_correction_rad;
-  if (!out.applied) out.rotation_rad = 0.0;
+  out.measured_rotation_rad = fold_direction_rad(out.em.mixture.mu_m - out.em.mixture.mu_s);
+  // Which set each sample came from (the EM labels may be off: label_sources = false).
+  std::vector<EmSource> own(samples.size(), EmSource::kM);
+  std::fill_n(own.begin(), s.size(), EmSource::kS);
+  const bool has_prior = std::isfinite(prior.sigma_rad);
+  const double var_prior = prior.sigma_rad * prior.sigma_rad;
+  const double var_meas =
+      mean_variance(samples, weights, own, EmSource::kS, out.em.mixture,
+                    em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
+      mean_variance(samples, weights, own, EmSource::kM, out.em.mixture,
+                    em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
+      (has_prior && options_.smear_variance ? var_prior / 3.0 : 0.0);
+  out.measurement_sigma_rad = std::sqrt(var_meas);
+
+  // Posterior of the rotation given the odometry prior N(0, prior²) and the EM measurement
+  // N(measured, meas²): mean = gain·measured with gain = prior² / (prior² + meas²).
+  out.gain = has_prior ? (std::isfinite(var_meas) ? var_prior / (var_prior + var_meas) : 0.0) : 1.0;
+  out.applied = std::abs(out.measured_rotation_rad) <= options_.max_correction_rad;
+  if (has_prior && out.applied) {
+    const double innovation_sd = std::sqrt(var_prior + var_meas);
+    out.applied = std::abs(out.measured_rotation_rad) <= options_.gate_sigmas * innovation_sd;
+  }
+  out.rotation_rad = out.applied ? out.gain * out.measured_rotation_rad : 0.0;
+  if (!out.applied) out.gain = 0.0;
   return out;
 }
 

@@ -41,7 +41,7 @@ struct GridOptions {
   /// specular sonar returns nothing from a wall met at more than ~22° from its normal, so a
   /// no-echo beam usually crosses a wall it did not see and Fig. A.3 erodes exactly the walls
   /// parallel to the robot's path. -1 = the thesis (clear to w). docs/algorithms.md.
-  double no_echo_clear_m = -1.0;
+  double no_echo_clear_m = 0.0;
   double miss_decrement = 1.0;       ///< decrement along the beam, thesis §2.2.3
   double bayes_max_occupied = 0.98;  ///< MO, thesis Table 2.1 (Moravec's maximum occupancy)
   double initial_extent_m = 12.0;    ///< side of a new room's grid before it grows

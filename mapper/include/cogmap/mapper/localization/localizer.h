@@ -2,6 +2,7 @@
 /// Heading correction between consecutive ASRs from their wall directions (thesis §3.1.9).
 /// docs/algorithms.md explains each step and where we depart from the text.
 
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -12,6 +13,25 @@ namespace cogmap::mapper {
 
 /// Which localisation a run uses (experiment key `mapper.localization`).
 enum class LocalizationKind { kNone, kEm };
+
+/// How fast a skid-steer's heading drifts, for the prior of the rotation EM looks for.
+struct HeadingDriftModel {
+  /// sd of the heading error per radian turned: the effective track of a skid-steer varies
+  /// with floor and turn curvature by a few per cent (docs/odometry-model.md: 2 % slowly
+  /// varying track noise with a 5 s correlation time, which partly averages out over a room).
+  /// Measured on the simulated P2-AT: rms 1.2 % of the rotation per room; 1.5 % keeps the prior
+  /// on the cautious (wide) side.
+  double per_rad_turned = 0.015;
+  /// Heading random walk while driving, rad/√m (uneven floor, tyre deformation; ~0.005 for a
+  /// P2-AT on a hard floor).
+  double rad_per_sqrt_m = 0.005;
+  /// sd that is always there (encoder quantisation, the drift left over from the previous
+  /// room after its own correction): 0.5°.
+  double floor_rad = 0.0087;
+  /// Chord length over which the path heading is measured: path vertices are half a cell
+  /// apart, so their raw directions jitter by tens of degrees; 0.5 m chords smooth that.
+  double chord_m = 0.5;
+};
 
 /// Options of Localizer::estimate.
 struct LocalizerOptions {
@@ -27,7 +47,46 @@ struct LocalizerOptions {
   bool label_sources = true;
   DominantDirectionOptions dominant;      ///< outlier-robust initialisation of μ_s and μ_m
   double min_initial_sigma_rad = 0.0087;  ///< floor of the initial σ_s, σ_m (0.5°)
+  /// Innovation gate: a measured rotation further than this many standard deviations of
+  /// sqrt(prior² + measurement²) from 0 is an outlier (a wrong match modulo 90°, a room whose
+  /// walls are mostly clutter) and is not applied. 3σ keeps 99.7 % of consistent measurements.
+  /// Only active when a finite prior is given.
+  double gate_sigmas = 3.0;
+  /// Floor of σ_s, σ_m when computing the sd of the measured rotation: walls come from a grid
+  /// of 0.1 m cells, so a 5 m wall's direction is quantised to ~atan(0.1/5) ≈ 1.1°; a room
+  /// whose segments agree exactly (σ collapsed to EM's 1e-4 floor) is not known better than that.
+  double min_direction_sigma_rad = 0.0175;
+  /// The walls of a room are seen at headings spread over the drift inside the room, so their
+  /// mean direction matches the heading error at an unknown moment of the visit, not at its end:
+  /// uniform over the visit, that adds prior²/3 to the measurement variance. This flag adds it.
+  bool smear_variance = true;
+  /// Whether the mapper facade combines EM with the odometry prior (shrinkage + gate). Off by
+  /// default: measured, the prior built from the drift model below helps the rooms' heading
+  /// but gates out the real corrections of 4 m corridor ASRs (docs/algorithms.md).
+  bool odometry_prior = false;
+  /// The odometry drift model the mapper facade turns a room's path into a RotationPrior with.
+  HeadingDriftModel drift;
 };
+
+/// What odometry says about the rotation between the new ASR's frame and the reference's:
+/// N(0, sigma_rad²). Infinite (the default) = no prior: the EM estimate is applied as it is.
+struct RotationPrior {
+  double sigma_rad = std::numeric_limits<double>::infinity();  ///< sd of the expected drift
+};
+
+/// Rotation (radians, ≥ 0) turned along a path: sum of |heading changes| between consecutive
+/// chords of at least `chord_m`, starting from `start_heading_rad` (the entry heading) and, if
+/// given, ending at `end_heading_rad` (the exit heading). Turns in place show up as corners.
+double path_rotation_rad(std::span<const Point2> path, double start_heading_rad,
+                         std::optional<double> end_heading_rad, double chord_m);
+
+/// Path length in metres.
+double path_length_m(std::span<const Point2> path);
+
+/// The prior sd of the heading drift accumulated while turning `rotation_rad` and driving
+/// `distance_m`: sqrt(floor² + (k_rot·rotation)² + k_walk²·distance).
+double heading_drift_sigma_rad(const HeadingDriftModel& model, double rotation_rad,
+                               double distance_m);
 
 /// The answer of one estimate.
 struct Localization {
@@ -37,6 +96,12 @@ struct Localization {
   double current_direction_rad = 0.0;    ///< μ_s in the world frame, folded to [−π/4, π/4)
   EmResult em;                           ///< EM on the data centred on the reference direction
   bool applied = false;  ///< false when there was too little evidence or the fix was too big
+  double measured_rotation_rad = 0.0;  ///< fold(μ_m − μ_s): EM's answer before the prior
+  /// sd of measured_rotation_rad: σ_s²/n_s + σ_m²/n_m with n_k the effective number of
+  /// independent segments EM gave to component k (Kish: (Σqw)²/Σ(qw)²).
+  double measurement_sigma_rad = 0.0;
+  double prior_sigma_rad = std::numeric_limits<double>::infinity();  ///< the prior used
+  double gain = 1.0;  ///< prior² / (prior² + measurement²): the share of the measurement applied
 };
 
 /// Estimates the drift in heading of a new ASR against the rooms mapped before it.
@@ -48,6 +113,11 @@ class Localizer {
   /// with those of `reference` (world frame, already corrected ASRs).
   Localization estimate(std::span<const Polyline> reference_world,
                         std::span<const Polyline> current_world) const;
+  /// The same, combined with the odometry prior N(0, prior.sigma_rad²) on the rotation: the
+  /// applied rotation is the posterior mean gain·measured, gain = prior²/(prior² + meas²), and
+  /// nothing is applied when |measured| > gate_sigmas·sqrt(prior² + meas²).
+  Localization estimate(std::span<const Polyline> reference_world,
+                        std::span<const Polyline> current_world, const RotationPrior& prior) const;
 
  private:
   LocalizerOptions options_;
