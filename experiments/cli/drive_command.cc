@@ -58,22 +58,10 @@ struct DriveArgs {
 };
 
 experiments::Experiment default_experiment(const std::vector<std::string>& sets) {
-  const fs::path tmp =
-      fs::temp_directory_path() / ("cogmap_drive_" + std::to_string(::getpid()) + ".yaml");
-  {
-    std::ofstream f(tmp);
-    f << "# drive without --experiment: mapper defaults, no world, stand still\n"
-      << "name: drive\nworld: none\nduration_s: 60\nrobot: {source: p2os}\n"
-      << "controller: {type: none}\n";
-  }
-  try {
-    experiments::Experiment e = experiments::load_experiment(tmp, sets);
-    fs::remove(tmp);
-    return e;
-  } catch (...) {
-    fs::remove(tmp);
-    throw;
-  }
+  // Without --experiment: mapper defaults, no world, stand still; --set works as in files.
+  return experiments::load_experiment_text(
+      "name: drive\nworld: none\nduration_s: 60\nrobot: {source: p2os}\ncontroller: {type: none}\n",
+      "drive-defaults.yaml", sets);
 }
 
 int drive(const DriveArgs& args) {

@@ -35,21 +35,9 @@ struct ReplayArgs {
 // Without --experiment: a minimal document, so --set and the mapper defaults work as in files.
 experiments::Experiment default_experiment(const std::string& name,
                                            const std::vector<std::string>& sets) {
-  const fs::path tmp =
-      fs::temp_directory_path() / ("cogmap_replay_" + std::to_string(::getpid()) + ".yaml");
-  {
-    std::ofstream f(tmp);
-    f << "# replay without --experiment: mapper defaults, no world\n"
-      << "name: " << name << "\nworld: none\nrobot: {source: log}\ncontroller: {type: none}\n";
-  }
-  try {
-    experiments::Experiment e = experiments::load_experiment(tmp, sets);
-    fs::remove(tmp);
-    return e;
-  } catch (...) {
-    fs::remove(tmp);
-    throw;
-  }
+  return experiments::load_experiment_text(
+      "name: " + name + "\nworld: none\nrobot: {source: log}\ncontroller: {type: none}\n",
+      "replay-defaults.yaml", sets);
 }
 
 int replay(const ReplayArgs& args) {

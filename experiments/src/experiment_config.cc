@@ -274,18 +274,33 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
   return e;
 }
 
-Experiment load_experiment(const std::filesystem::path& path,
-                           const std::vector<std::string>& overrides,
-                           std::optional<std::uint64_t> seed_override) {
-  Node root = Node::load_file(path);
+namespace {
+
+Experiment parse_with_overrides(Node root, const std::filesystem::path& file,
+                                const std::vector<std::string>& overrides,
+                                std::optional<std::uint64_t> seed_override) {
   root.expect_map();
   for (const std::string& o : overrides) yaml::apply_override(root.raw(), o);
   if (seed_override) root.raw()["seed"] = *seed_override;
   try {
-    return parse_experiment(root, path);
+    return parse_experiment(root, file);
   } catch (const ConfigError& e) {
     rethrow_with_override(e, overrides);
   }
+}
+
+}  // namespace
+
+Experiment load_experiment(const std::filesystem::path& path,
+                           const std::vector<std::string>& overrides,
+                           std::optional<std::uint64_t> seed_override) {
+  return parse_with_overrides(Node::load_file(path), path, overrides, seed_override);
+}
+
+Experiment load_experiment_text(const std::string& text, const std::string& name,
+                                const std::vector<std::string>& overrides) {
+  return parse_with_overrides(Node::load_string(text, name), std::filesystem::current_path() / name,
+                              overrides, std::nullopt);
 }
 
 }  // namespace cogmap::experiments

@@ -72,6 +72,11 @@ Experiment load_experiment(const std::filesystem::path& path,
                            const std::vector<std::string>& overrides = {},
                            std::optional<std::uint64_t> seed_override = std::nullopt);
 
+/// The same for a document given as text; `name` stands for the file in error messages and
+/// relative paths resolve against the current directory (drive/replay without --experiment).
+Experiment load_experiment_text(const std::string& text, const std::string& name,
+                                const std::vector<std::string>& overrides = {});
+
 /// Parses an already loaded document (used by load_experiment and by sweeps, which apply
 /// their own overrides). `file` is the path errors name and relative paths resolve against.
 Experiment parse_experiment(const yaml::Node& root, const std::filesystem::path& file);
