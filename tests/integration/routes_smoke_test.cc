@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <sstream>
 #include <string>
 
@@ -26,6 +27,9 @@ struct RouteCase {
   std::string experiment;
   int min_asrs;  ///< rooms the route visits (doorway ASRs) or its length / 4 m (distance ASRs)
 };
+
+/// Names the case in test output (gtest would print the struct's bytes).
+void PrintTo(const RouteCase& c, std::ostream* os) { *os << c.experiment; }
 
 class RouteSmoke : public ::testing::TestWithParam<RouteCase> {};
 
