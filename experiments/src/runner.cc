@@ -13,12 +13,7 @@
 #include "cogmap/mapper/io/directory_asr_store.h"
 #include "cogmap/mapper/mapper.h"
 #include "cogmap/mapper/nav/controller.h"
-#if __has_include("cogmap/render/figures.h")
 #include "cogmap/render/figures.h"
-#define COGMAP_EXPERIMENTS_HAVE_RENDER 1
-#else
-#define COGMAP_EXPERIMENTS_HAVE_RENDER 0
-#endif
 
 namespace cogmap::experiments {
 namespace {
@@ -111,7 +106,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                              const GroundTruth* truth, const RunOptions& options) {
   const fs::path out = options.out_dir;
   const bool want_figures = options.figures.value_or(experiment.figures);
-  const bool figures = want_figures && COGMAP_EXPERIMENTS_HAVE_RENDER;
+  const bool figures = want_figures;
   try {
     clear_run_outputs(out);
     mapper::io::write_file_atomic(out / "experiment.yaml", experiment.resolved_yaml);
@@ -131,14 +126,12 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   mapper.set_room_listener([&](const mapper::Asr& asr, const mapper::AsrTrace& trace) {
     const std::string stem = room_stem(asr.id);
     write_ros_map(trace.raw, occupied_threshold, out, "grid_" + stem);
-#if COGMAP_EXPERIMENTS_HAVE_RENDER
     if (figures) {
       const auto t0 = Clock::now();
       render::write_room_stages_figure(trace, experiment.name + ": room " + std::to_string(asr.id),
                                        out / "figures" / ("room_" + stem + "_stages.png"));
       figure_time += Clock::now() - t0;
     }
-#endif
   });
 
   auto controller = make_controller(experiment.controller);
@@ -251,7 +244,6 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                subsample_path(est_path, 0.05), labels};
     mapper::io::write_file_atomic(out / "map.svg", map_svg(svg));
 
-#if COGMAP_EXPERIMENTS_HAVE_RENDER
     if (figures) {
       render::MapFigure fig;
       fig.title = experiment.name + " (seed " + std::to_string(experiment.seed) + ")";
@@ -269,7 +261,6 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       render::write_graph_figure(mapper.graph(), experiment.name + ": room graph",
                                  out / "figures" / "graph.png");
     }
-#endif
     // Last: its presence marks the run as finished (sweeps skip finished runs).
     mapper::io::write_file_atomic(out / "metrics.json", metrics_json_text(m));
   } catch (const std::exception& e) {

@@ -6,12 +6,7 @@
 #include <map>
 #include <optional>
 
-#if __has_include("cogmap/render/figures.h")
 #include "cogmap/render/figures.h"
-#define COGMAP_EXPERIMENTS_HAVE_RENDER 1
-#else
-#define COGMAP_EXPERIMENTS_HAVE_RENDER 0
-#endif
 
 namespace cogmap::experiments {
 namespace {
@@ -107,7 +102,6 @@ std::vector<MetricSeries> metric_series(const ResultsTable& table, const std::st
 std::vector<std::filesystem::path> write_sweep_plots(const ResultsTable& table,
                                                      const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> written;
-#if COGMAP_EXPERIMENTS_HAVE_RENDER
   for (const std::string& metric : plotted_metrics()) {
     std::vector<std::string> categories;
     const auto series = metric_series(table, metric, &categories);
@@ -126,10 +120,6 @@ std::vector<std::filesystem::path> write_sweep_plots(const ResultsTable& table,
     render::write_metric_plot(metric + " vs " + table.header[1], x_label, metric, plot, png);
     written.push_back(png);
   }
-#else
-  (void)table;
-  (void)dir;
-#endif
   return written;
 }
 

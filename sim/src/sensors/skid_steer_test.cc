@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "yaml/config_error_test_support.h"
+
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -166,14 +168,7 @@ TEST(SkidSteer, SameSeedSameRun) {
   EXPECT_NE(run(9).theta_rad, run(10).theta_rad);
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const yaml::ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using yaml::testing::config_error_of;
 
 TEST(OdometryOptions, ParsesPresetsAndKeys) {
   const auto root = yaml::Node::load_string(
@@ -204,16 +199,16 @@ TEST(OdometryOptions, ParsesPresetsAndKeys) {
 
 TEST(OdometryOptions, RejectsUnknownKeysWrongTypesAndBadValues) {
   const auto root = yaml::Node::load_string("robot:\n  odometry:\n    trak_m: 0.4\n", "exp.yaml");
-  std::string msg = error_of([&] { parse_odometry_options(root["robot"]["odometry"]); });
+  std::string msg = config_error_of([&] { parse_odometry_options(root["robot"]["odometry"]); });
   EXPECT_EQ(msg.rfind("exp.yaml:3: robot.odometry.trak_m: unknown key", 0), 0u) << msg;
   const auto typed = yaml::Node::load_string("odometry:\n  track_m: wide\n", "t.yaml");
-  msg = error_of([&] { parse_odometry_options(typed["odometry"]); });
+  msg = config_error_of([&] { parse_odometry_options(typed["odometry"]); });
   EXPECT_EQ(msg.rfind("t.yaml:2: odometry.track_m: expected a finite number", 0), 0u) << msg;
   const auto preset = yaml::Node::load_string("odometry:\n  preset: perfect\n", "p.yaml");
-  msg = error_of([&] { parse_odometry_options(preset["odometry"]); });
+  msg = config_error_of([&] { parse_odometry_options(preset["odometry"]); });
   EXPECT_EQ(msg.rfind("p.yaml:2: odometry.preset: unknown preset", 0), 0u) << msg;
   const auto neg = yaml::Node::load_string("odometry:\n  track_noise_sd: -1\n", "n.yaml");
-  msg = error_of([&] { parse_odometry_options(neg["odometry"]); });
+  msg = config_error_of([&] { parse_odometry_options(neg["odometry"]); });
   EXPECT_EQ(msg.rfind("n.yaml:2: odometry.track_noise_sd: must be", 0), 0u) << msg;
 }
 

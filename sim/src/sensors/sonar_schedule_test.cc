@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "yaml/config_error_test_support.h"
+
 #include <functional>
 #include <random>
 #include <string>
@@ -106,14 +108,7 @@ TEST(SonarSchedule, CustomFiringOrderAndValidation) {
   EXPECT_THROW(SonarModel(o, g, 1), std::invalid_argument);
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const yaml::ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using yaml::testing::config_error_of;
 
 TEST(SonarOptions, ParsesEveryKey) {
   const auto root = yaml::Node::load_string(
@@ -139,19 +134,19 @@ TEST(SonarOptions, ParsesEveryKey) {
 TEST(SonarOptions, RejectsUnknownKeysWrongTypesAndBadValues) {
   const auto root = yaml::Node::load_string(
       "robot:\n  sonar:\n    critical_angle_deg: 20\n    multipth: true\n", "exp.yaml");
-  std::string msg = error_of([&] { parse_sonar_options(root["robot"]["sonar"]); });
+  std::string msg = config_error_of([&] { parse_sonar_options(root["robot"]["sonar"]); });
   EXPECT_EQ(msg.rfind("exp.yaml:4: robot.sonar.multipth: unknown key", 0), 0u) << msg;
 
   const auto typed = yaml::Node::load_string("sonar:\n  rays_per_cone: many\n", "t.yaml");
-  msg = error_of([&] { parse_sonar_options(typed["sonar"]); });
+  msg = config_error_of([&] { parse_sonar_options(typed["sonar"]); });
   EXPECT_EQ(msg.rfind("t.yaml:2: sonar.rays_per_cone: expected an integer", 0), 0u) << msg;
 
   const auto bad = yaml::Node::load_string("sonar:\n  dropout_probability: 1.5\n", "b.yaml");
-  msg = error_of([&] { parse_sonar_options(bad["sonar"]); });
+  msg = config_error_of([&] { parse_sonar_options(bad["sonar"]); });
   EXPECT_EQ(msg.rfind("b.yaml:2: sonar.dropout_probability: must be in [0, 1]", 0), 0u) << msg;
 
   const auto order = yaml::Node::load_string("sonar:\n  firing_order: [1, x]\n", "o.yaml");
-  msg = error_of([&] { parse_sonar_options(order["sonar"]); });
+  msg = config_error_of([&] { parse_sonar_options(order["sonar"]); });
   EXPECT_NE(msg.find("sonar.firing_order[1]: expected an integer"), std::string::npos) << msg;
 }
 

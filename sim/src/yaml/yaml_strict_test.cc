@@ -1,39 +1,35 @@
 #include <gtest/gtest.h>
 
+#include "config_error_test_support.h"
+
 #include "cogmap/sim/yaml_strict.h"
 
 namespace cogmap::yaml {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::config_error_of;
 
 TEST(YamlStrict, UnknownKeyNamesFileLineAndKey) {
   const Node root = Node::load_string("a: 1\nrobot:\n  speed: 2\n  sped: 3\n", "x.yaml");
-  const std::string msg = error_of([&] { root["robot"].expect_keys({"speed"}); });
+  const std::string msg = config_error_of([&] { root["robot"].expect_keys({"speed"}); });
   EXPECT_EQ(msg.rfind("x.yaml:4: robot.sped: unknown key", 0), 0u) << msg;
 }
 
 TEST(YamlStrict, WrongTypeAndMissingKey) {
   const Node root = Node::load_string("a: hello\nb: [1, 2]\n", "y.yaml");
-  EXPECT_NE(error_of([&] { root.get<double>("a"); }).find("y.yaml:1: a: expected a finite number"),
+  EXPECT_NE(
+      config_error_of([&] { root.get<double>("a"); }).find("y.yaml:1: a: expected a finite number"),
+      std::string::npos);
+  EXPECT_NE(config_error_of([&] { root.get<double>("c"); }).find("missing required key 'c'"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { root.get<double>("c"); }).find("missing required key 'c'"),
-            std::string::npos);
-  EXPECT_NE(error_of([&] { root.get<int>("b"); }).find("y.yaml:2: b: expected an integer"),
+  EXPECT_NE(config_error_of([&] { root.get<int>("b"); }).find("y.yaml:2: b: expected an integer"),
             std::string::npos);
   EXPECT_EQ(root["b"].at(1).as<int>(), 2);
   EXPECT_EQ(root.get_or<double>("missing", 4.5), 4.5);
 }
 
 TEST(YamlStrict, SyntaxErrorReportsLine) {
-  const std::string msg = error_of([] { Node::load_string("a: 1\nb: [1, 2\n", "z.yaml"); });
+  const std::string msg = config_error_of([] { Node::load_string("a: 1\nb: [1, 2\n", "z.yaml"); });
   EXPECT_EQ(msg.rfind("z.yaml:", 0), 0u) << msg;
   EXPECT_NE(msg.find("YAML syntax"), std::string::npos);
 }
