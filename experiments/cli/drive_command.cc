@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +13,7 @@
 #include <memory>
 
 #include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/runner.h"
 #include "cogmap/hw/fd_stream.h"
 #include "cogmap/hw/log_robot.h"
@@ -26,14 +29,16 @@ using namespace std::chrono_literals;
 std::atomic<bool> g_interrupted{false};
 extern "C" void on_interrupt(int) { g_interrupted = true; }
 
-// Ends the session (next_frame empty) after Ctrl-C, so the runner stops the robot and still
-// writes every output.
+// Ends the session (next_frame empty) after Ctrl-C or at a wall-clock deadline, so the runner
+// stops the robot and still writes every output. The deadline bounds a session whose peer
+// sends no usable frames (frame time then never reaches duration_s).
 class InterruptibleRobot final : public mapper::Robot {
  public:
-  explicit InterruptibleRobot(mapper::Robot& inner) : inner_(inner) {}
+  InterruptibleRobot(mapper::Robot& inner, std::chrono::steady_clock::time_point deadline)
+      : inner_(inner), deadline_(deadline) {}
   const mapper::RobotGeometry& geometry() const override { return inner_.geometry(); }
   std::optional<mapper::SensorFrame> next_frame() override {
-    if (g_interrupted) return std::nullopt;
+    if (g_interrupted || std::chrono::steady_clock::now() > deadline_) return std::nullopt;
     return inner_.next_frame();
   }
   void command(const mapper::VelocityCommand& cmd) override { inner_.command(cmd); }
@@ -41,7 +46,12 @@ class InterruptibleRobot final : public mapper::Robot {
 
  private:
   mapper::Robot& inner_;
+  std::chrono::steady_clock::time_point deadline_;
 };
+
+// Slack past duration_s on the wall clock before a session is cut: covers connection set-up
+// and a server whose clock runs slower than ours.
+constexpr std::chrono::seconds kWallSlack{30};
 
 struct DriveArgs {
   std::string port;
@@ -77,7 +87,26 @@ int drive(const DriveArgs& args) {
     std::cerr << "cogmap drive: " << e.what() << "\n";
     return kExitBadInput;
   }
-  if (args.duration_s) experiment.duration_s = *args.duration_s;
+  if (args.duration_s) {
+    if (*args.duration_s > experiments::ExperimentLimits{}.max_duration_s) {
+      std::cerr << "cogmap drive: --duration " << *args.duration_s << " is above the "
+                << experiments::ExperimentLimits{}.max_duration_s
+                << " s run-duration limit (docs/reliability.md)\n";
+      return kExitBadInput;
+    }
+    experiment.duration_s = *args.duration_s;
+  }
+  const fs::path out_dir =
+      args.out.empty() ? fs::path("runs") / experiments::safe_path_component(experiment.name)
+                       : fs::path(args.out);
+  try {
+    std::vector<fs::path> inputs{experiment.file};
+    if (!args.record.empty()) inputs.push_back(args.record);
+    experiments::check_run_directory(out_dir, inputs);
+  } catch (const experiments::RunDirectoryError& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    return kExitBadInput;
+  }
   if (experiment.controller.steer_by_truth) {
     // A real robot has no true pose: steer by the mapper's estimate, as a real run must.
     std::cerr << "cogmap drive: controller.pose: truth is for simulated runs; steering by the "
@@ -113,6 +142,11 @@ int drive(const DriveArgs& args) {
   hw::P2osRobotOptions robot_options;
   robot_options.log = [](const std::string& m) { std::cerr << "cogmap drive: " << m << "\n"; };
   if (args.sip_clock) robot_options.clock = hw::FrameClock::kSipCount;
+  // --duration bounds the handshake too: a peer that never completes SYNC0-2 cannot hold a
+  // 5 s drive for the default 15 s.
+  const auto duration_ms = std::chrono::milliseconds(
+      static_cast<std::int64_t>(std::ceil(std::min(experiment.duration_s, 1e6) * 1000.0)));
+  robot_options.handshake_timeout = std::min(robot_options.handshake_timeout, duration_ms);
   std::unique_ptr<hw::P2osRobot> robot;
   try {
     robot = std::make_unique<hw::P2osRobot>(std::move(stream), robot_options);
@@ -132,13 +166,14 @@ int drive(const DriveArgs& args) {
       return kExitBadInput;
     }
   }
-  InterruptibleRobot interruptible(*source);
+  InterruptibleRobot interruptible(*source,
+                                   std::chrono::steady_clock::now() + duration_ms + kWallSlack);
   g_interrupted = false;
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
 
   experiments::RunOptions options;
-  options.out_dir = args.out.empty() ? fs::path("runs") / experiment.name : fs::path(args.out);
+  options.out_dir = out_dir;
   if (args.no_figures) options.figures = false;
   if (experiment.start) options.start_pose = *experiment.start;
   int code = kExitOk;

@@ -2,9 +2,12 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <new>
 
+#include "cogmap/sim/yaml_strict.h"
 #include "command_registry.h"
 
 namespace cogmap::cli {
@@ -18,6 +21,32 @@ CommandRegistrar::CommandRegistrar(std::string name, CommandAdder add) {
   command_registry().push_back({std::move(name), std::move(add)});
 }
 
+namespace {
+
+// What a last-resort handler prints: the exception's message when there is one.
+std::string describe_current_exception() {
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    return "out of memory (std::bad_alloc)";
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "unknown exception";
+  }
+}
+
+// An exception escaping a thread (or a noexcept function) ends here instead of in abort():
+// one line on stderr and exit 1, never a core dump with SIGABRT.
+[[noreturn]] void on_terminate() {
+  const std::string what =
+      std::current_exception() ? describe_current_exception() : "std::terminate called";
+  std::cerr << "cogmap: internal error: " << what << " (please report this)\n";
+  std::_Exit(kExitFailed);
+}
+
+}  // namespace
+
 }  // namespace cogmap::cli
 
 int main(int argc, char** argv) {
@@ -30,11 +59,21 @@ int main(int argc, char** argv) {
   std::sort(entries.begin(), entries.end(),
             [](const CommandEntry& a, const CommandEntry& b) { return a.name < b.name; });
   for (const CommandEntry& entry : entries) entry.add(app, exit_code);
+  std::set_terminate(on_terminate);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? kExitOk : kExitBadInput;
+  } catch (const cogmap::yaml::ConfigError& e) {
+    std::cerr << "cogmap: " << e.what() << "\n";  // bad input a subcommand did not expect
+    return kExitBadInput;
+  } catch (...) {
+    // The last resort: every subcommand reports its own errors; anything that still escapes
+    // is a bug, but it must end in a message and exit 1, not a crash.
+    std::cerr << "cogmap: internal error: " << describe_current_exception()
+              << " (please report this)\n";
+    return kExitFailed;
   }
   return exit_code;
 }

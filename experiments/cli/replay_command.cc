@@ -1,4 +1,4 @@
-// `cogmap replay LOG`: runs the mapper over a recorded log (cogmap, CARMEN or Player format)
+// `cogmap replay LOG`: runs the mapper over a recorded log (cogmap, CARMEN, Player, ROS 1 bag)
 // through the same session loop as live runs (docs/robot-driver.md). Ground truth is used only
 // when the log carries true poses and --experiment names the world they belong to.
 #include <CLI/CLI.hpp>
@@ -10,7 +10,9 @@
 #include <memory>
 
 #include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/runner.h"
+#include "cogmap/hw/bag_import.h"
 #include "cogmap/hw/log_import.h"
 #include "cogmap/hw/log_robot.h"
 #include "cogmap/mapper/seam/fake_robot.h"
@@ -30,14 +32,32 @@ struct ReplayArgs {
   std::vector<std::string> sets;
   std::string format = "auto";
   bool no_figures = false;
+  hw::BagImportOptions bag;  ///< --sonar-topic, --odom-topic, --robot (ROS bags only)
 };
 
+// A ROS bag becomes frames in memory like the other foreign logs (hw/bag_import.h).
+std::unique_ptr<mapper::Robot> bag_robot(const ReplayArgs& args, double& last_time_s) {
+  hw::ImportedBag imported = hw::import_ros_bag(args.log, args.bag);
+  std::cerr << "cogmap replay: " << hw::format_bag_stats(imported.stats) << "\n";
+  if (!imported.log.frames.empty()) last_time_s = imported.log.frames.back().time_s;
+  return std::make_unique<mapper::FakeRobot>(imported.log.geometry, std::move(imported.log.frames));
+}
+
 // Without --experiment: a minimal document, so --set and the mapper defaults work as in files.
+// The name (from the log's file name, which may hold any byte) is set after parsing, never
+// pasted into YAML text: a name with ": " or a newline must not become keys.
 experiments::Experiment default_experiment(const std::string& name,
                                            const std::vector<std::string>& sets) {
-  return experiments::load_experiment_text(
-      "name: " + name + "\nworld: none\nrobot: {source: log}\ncontroller: {type: none}\n",
+  experiments::Experiment e = experiments::load_experiment_text(
+      "name: replay\nworld: none\nrobot: {source: log}\ncontroller: {type: none}\n",
       "replay-defaults.yaml", sets);
+  e.name = name;
+  YAML::Node doc = YAML::Load(e.resolved_yaml);
+  doc["name"] = name;  // the emitter quotes whatever the name holds
+  YAML::Emitter out;
+  out << doc;
+  e.resolved_yaml = std::string(out.c_str()) + "\n";
+  return e;
 }
 
 int replay(const ReplayArgs& args) {
@@ -46,26 +66,38 @@ int replay(const ReplayArgs& args) {
   hw::LogRobot* cogmap_log = nullptr;
   double last_time_s = 0.0;
   try {
-    hw::LogFormat format;
-    if (args.format == "auto") {
-      format = hw::detect_log_format(args.log);
-    } else {
-      format = args.format == "cogmap"   ? hw::LogFormat::kCogmap
-               : args.format == "carmen" ? hw::LogFormat::kCarmen
-                                         : hw::LogFormat::kPlayer;
+    const bool bag =
+        args.format == "rosbag" || (args.format == "auto" && hw::looks_like_ros_bag(args.log));
+    if (!bag &&
+        !(args.bag.robot.empty() && args.bag.sonar_topic.empty() && args.bag.odom_topic.empty())) {
+      throw hw::LogError(args.log +
+                         ": --robot, --sonar-topic and --odom-topic apply to ROS bags only");
     }
-    if (format == hw::LogFormat::kCogmap) {
-      auto log = std::make_unique<hw::LogRobot>(args.log);
-      cogmap_log = log.get();
-      last_time_s = log->last_time_s();
-      robot = std::move(log);
+    if (bag) {
+      robot = bag_robot(args, last_time_s);
     } else {
-      hw::ImportedLog imported = format == hw::LogFormat::kCarmen ? hw::import_carmen_log(args.log)
-                                                                  : hw::import_player_log(args.log);
-      if (!imported.frames.empty()) last_time_s = imported.frames.back().time_s;
-      std::cerr << "cogmap replay: imported " << imported.frames.size() << " frames ("
-                << imported.ignored_lines << " other lines skipped)\n";
-      robot = std::make_unique<mapper::FakeRobot>(imported.geometry, std::move(imported.frames));
+      hw::LogFormat format;
+      if (args.format == "auto") {
+        format = hw::detect_log_format(args.log);
+      } else {
+        format = args.format == "cogmap"   ? hw::LogFormat::kCogmap
+                 : args.format == "carmen" ? hw::LogFormat::kCarmen
+                                           : hw::LogFormat::kPlayer;
+      }
+      if (format == hw::LogFormat::kCogmap) {
+        auto log = std::make_unique<hw::LogRobot>(args.log);
+        cogmap_log = log.get();
+        last_time_s = log->last_time_s();
+        robot = std::move(log);
+      } else {
+        hw::ImportedLog imported = format == hw::LogFormat::kCarmen
+                                       ? hw::import_carmen_log(args.log)
+                                       : hw::import_player_log(args.log);
+        if (!imported.frames.empty()) last_time_s = imported.frames.back().time_s;
+        std::cerr << "cogmap replay: imported " << imported.frames.size() << " frames ("
+                  << imported.ignored_lines << " other lines skipped)\n";
+        robot = std::make_unique<mapper::FakeRobot>(imported.geometry, std::move(imported.frames));
+      }
     }
   } catch (const hw::LogError& e) {
     std::cerr << "cogmap replay: " << e.what() << "\n";
@@ -77,7 +109,9 @@ int replay(const ReplayArgs& args) {
   experiments::RunOptions options;
   try {
     if (args.experiment.empty()) {
-      experiment = default_experiment("replay_" + fs::path(args.log).stem().string(), args.sets);
+      experiment = default_experiment(
+          "replay_" + experiments::safe_path_component(fs::path(args.log).stem().string()),
+          args.sets);
     } else {
       experiment = experiments::load_experiment(args.experiment, args.sets);
       sim::WorldSpec world = sim::load_world(experiment.world);
@@ -101,13 +135,24 @@ int replay(const ReplayArgs& args) {
   experiment.controller.type = experiments::ControllerKind::kNone;
   experiment.controller.steer_by_truth = false;
   experiment.duration_s = last_time_s + 1.0;
-  options.out_dir = args.out.empty() ? fs::path("runs") / experiment.name : fs::path(args.out);
+  options.out_dir = args.out.empty()
+                        ? fs::path("runs") / experiments::safe_path_component(experiment.name)
+                        : fs::path(args.out);
+  try {
+    experiments::check_run_directory(options.out_dir, {experiment.file, fs::path(args.log)});
+  } catch (const experiments::RunDirectoryError& e) {
+    std::cerr << "cogmap replay: " << e.what() << "\n";
+    return kExitBadInput;
+  }
   if (args.no_figures) options.figures = false;
   try {
     const auto summary = experiments::run_robot_session(*robot, experiment, truth.get(), options);
     std::cout << "cogmap replay: " << args.log << ": " << summary.metrics.asr_count
               << " rooms, outputs in " << summary.out_dir.string() << "\n";
     return kExitOk;
+  } catch (const experiments::RunDirectoryError& e) {
+    std::cerr << "cogmap replay: " << e.what() << "\n";
+    return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "cogmap replay: " << e.what() << "\n";
     return kExitFailed;
@@ -118,7 +163,8 @@ const CommandRegistrar kRegistrar{
     "replay", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<ReplayArgs>();
       CLI::App* sub = app.add_subcommand(
-          "replay", "Map a recorded log (cogmap, CARMEN or Player 2.x) and write a run directory");
+          "replay",
+          "Map a recorded log (cogmap, CARMEN, Player 2.x or ROS 1 bag) and write a run directory");
       sub->add_option("log", args->log, "the log file")->required()->check(CLI::ExistingFile);
       sub->add_option("--out", args->out, "run directory (default runs/replay_<log name>)");
       sub->add_option("--experiment", args->experiment,
@@ -128,7 +174,13 @@ const CommandRegistrar kRegistrar{
           ->take_all()
           ->allow_extra_args(false);
       sub->add_option("--format", args->format, "log format (default: detected)")
-          ->check(CLI::IsMember({"auto", "cogmap", "carmen", "player"}));
+          ->check(CLI::IsMember({"auto", "cogmap", "carmen", "player", "rosbag"}));
+      sub->add_option("--robot", args->bag.robot,
+                      "ROS bag: the robot model (p2at, p2at8, p3at, p3dx, p2dx, p2de, peoplebot)");
+      sub->add_option("--sonar-topic", args->bag.sonar_topic,
+                      "ROS bag: the sonar topic (default: detected by type)");
+      sub->add_option("--odom-topic", args->bag.odom_topic,
+                      "ROS bag: the nav_msgs/Odometry or /tf topic (default: detected)");
       sub->add_flag("--no-figures", args->no_figures, "skip the PNG figures (faster)");
       sub->callback([&exit_code, args] { exit_code = replay(*args); });
     }};

@@ -1,6 +1,7 @@
 // `cogmap run EXPERIMENT.yaml`: one simulated run into a run directory (docs/cli.md).
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/number_format.h"
 #include "cogmap/experiments/progress.h"
+#include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/runner.h"
 #include "command_registry.h"
 
@@ -20,7 +22,7 @@ using experiments::format_double;
 struct RunArgs {
   std::string experiment;
   std::string out;
-  std::optional<std::uint64_t> seed;
+  std::string seed;  // text: CLI11 would wrap "-1" to 2^64-1
   std::vector<std::string> sets;
   bool no_figures = false;
   bool force = false;
@@ -51,19 +53,48 @@ std::string summary_line(const experiments::RunMetrics& m) {
   return s.str();
 }
 
+// --seed N: a whole number in [0, 2^64 - 1], nothing else (no sign, no fraction, no wrap).
+std::optional<std::uint64_t> parse_seed(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  std::uint64_t v = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size()) {
+    throw std::invalid_argument("--seed '" + text +
+                                "': expected a whole number from 0 to 18446744073709551615");
+  }
+  return v;
+}
+
 int run(const RunArgs& args) {
   experiments::Experiment experiment;
   try {
-    experiment = experiments::load_experiment(args.experiment, args.sets, args.seed);
-    experiments::validate_experiment(experiment);
+    // The world and robot block are checked by run_experiment before anything is written,
+    // so the world file is read once.
+    experiment = experiments::load_experiment(args.experiment, args.sets, parse_seed(args.seed));
   } catch (const yaml::ConfigError& e) {
     std::cerr << "cogmap run: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "cogmap run: " << e.what() << "\n";
+    return kExitBadInput;
   }
-  const fs::path out =
+  fs::path out =
       args.out.empty()
-          ? fs::path("runs") / (experiment.name + "_seed" + std::to_string(experiment.seed))
+          ? fs::path("runs") / experiments::safe_path_component(experiment.name + "_seed" +
+                                                                std::to_string(experiment.seed))
           : fs::path(args.out);
+  // `cogmap run DIR/experiment.yaml` (docs/cli.md) with DIR the default directory: the rerun
+  // goes next to it, never over the file being read.
+  std::error_code ec;
+  if (args.out.empty() && fs::equivalent(out, fs::path(args.experiment).parent_path(), ec)) {
+    out += "_rerun";
+  }
+  try {
+    experiments::check_run_directory(out, {experiment.file});
+  } catch (const experiments::RunDirectoryError& e) {
+    std::cerr << "cogmap run: " << e.what() << "\n";
+    return kExitBadInput;
+  }
   if (fs::exists(out / "metrics.json") && !args.force) {
     std::cerr << "cogmap run: " << out.string()
               << " already holds a finished run (metrics.json); pass --force to replace it or "
@@ -85,6 +116,10 @@ int run(const RunArgs& args) {
               << summary_line(summary.metrics) << "\n";
     return kExitOk;
   } catch (const yaml::ConfigError& e) {
+    bar.finish();
+    std::cerr << "cogmap run: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const experiments::RunDirectoryError& e) {
     bar.finish();
     std::cerr << "cogmap run: " << e.what() << "\n";
     return kExitBadInput;

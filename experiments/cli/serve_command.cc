@@ -58,6 +58,11 @@ int serve(const ServeArgs& args) {
   hw::P2osServerOptions server_options;
   server_options.cycle = std::chrono::milliseconds(args.cycle_ms);
   server_options.log = [](const std::string& m) { std::cerr << "cogmap serve: " << m << "\n"; };
+  // A client may re-time and re-sequence the sonar as on a real P2OS controller.
+  server_options.set_sonar_cycle_ms = [&body](int ms) { body.set_sonar_cycle_ms(ms); };
+  server_options.set_sonar_polling = [&body](int array, const std::vector<int>& sequence) {
+    body.set_sonar_polling(array, sequence);
+  };
 
   g_stop = false;
   std::signal(SIGINT, on_stop_signal);

@@ -26,6 +26,7 @@ struct SweepArgs {
   bool merge = false;
   bool no_figures = false;
   bool no_plots = false;
+  std::size_t max_runs = experiments::SweepLimits{}.max_runs;
 };
 
 std::string read_text(const fs::path& p) {
@@ -83,7 +84,7 @@ int sweep(const SweepArgs& args) {
     return kExitBadInput;
   }
   try {
-    spec = experiments::load_sweep(args.inputs.front());
+    spec = experiments::load_sweep(args.inputs.front(), {args.max_runs});
     options.out_dir = args.out.empty() ? fs::path("sweeps") / fs::path(spec.file).stem().stem()
                                        : fs::path(args.out);
     options.jobs = args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
@@ -133,6 +134,9 @@ const CommandRegistrar kRegistrar{
       sub->add_flag("--merge", args->merge, "join results files of shard outputs");
       sub->add_flag("--no-figures", args->no_figures, "skip each run's PNG figures");
       sub->add_flag("--no-plots", args->no_plots, "skip the per-metric plots");
+      sub->add_option("--max-runs", args->max_runs,
+                      "refuse sweeps with more runs than this (default 10000)")
+          ->check(CLI::PositiveNumber);
       sub->callback([&exit_code, args] { exit_code = args->merge ? merge(*args) : sweep(*args); });
     }};
 

@@ -245,11 +245,19 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
   if (e.name.empty()) root["name"].fail("must not be empty");
   if (const auto d = root.child("description")) (void)d->as<std::string>();
   const std::string world = root.get<std::string>("world");
+  e.world_line = root["world"].line();
+  if (world.empty()) root["world"].fail("must not be empty (a world file, or 'none')");
   const std::filesystem::path world_path(world);
   e.world = world_path.is_absolute() ? world_path : file.parent_path() / world_path;
   e.world = e.world.lexically_normal();
   e.seed = root.get_or<std::uint64_t>("seed", e.seed);
   e.duration_s = number_above(root, "duration_s", 0.0, e.duration_s);
+  if (e.duration_s > ExperimentLimits{}.max_duration_s) {
+    std::ostringstream msg;
+    msg << "must be at most " << ExperimentLimits{}.max_duration_s
+        << " s (the run-duration limit, docs/reliability.md), got " << e.duration_s;
+    root["duration_s"].fail(msg.str());
+  }
 
   if (const auto start = root.child("start")) {
     start->expect_keys({"x_m", "y_m", "theta_deg"});

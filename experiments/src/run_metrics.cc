@@ -23,6 +23,27 @@ void put_accuracy_extras(Json& block, const MapAccuracy& a) {
   block["visible_truth_samples"] = a.visible_truth_samples;
 }
 
+template <typename T>
+Json opt_any(const std::optional<T>& v) {
+  return v ? Json(*v) : Json(nullptr);
+}
+
+Json nav_json(const NavMetrics& n) {
+  Json nav = Json::object();
+  nav["route_completed"] = opt_any(n.route_completed);
+  nav["waypoints_total"] = n.waypoints_total;
+  nav["waypoints_skipped"] = n.waypoints_skipped;
+  nav["recoveries"] = n.recoveries;
+  nav["door_passages"] = n.door_passages;
+  nav["contacts"] = opt_any(n.contacts);
+  nav["contact_s"] = opt(n.contact_s);
+  nav["distance_m"] = n.distance_m;
+  nav["stalled_s"] = n.stalled_s;
+  nav["rooms_visited"] = opt_any(n.rooms_visited);
+  nav["exploration_complete"] = opt_any(n.exploration_complete);
+  return nav;
+}
+
 }  // namespace
 
 std::string metrics_json_text(const RunMetrics& m) {
@@ -38,6 +59,8 @@ std::string metrics_json_text(const RunMetrics& m) {
   j["asr_count"] = m.asr_count;
   j["frames"] = m.frames;
   if (m.route_completed) j["route_completed"] = *m.route_completed;
+
+  j["nav"] = nav_json(m.nav);
 
   Json map = Json::object();
   if (m.map) put_accuracy(map, *m.map);

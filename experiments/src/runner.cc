@@ -7,7 +7,9 @@
 #include <regex>
 #include <system_error>
 
+#include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/experiments/ros_map.h"
+#include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/run_outputs.h"
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/mapper/io/directory_asr_store.h"
@@ -63,12 +65,22 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
   return mapper::nav::make_idle_controller();
 }
 
-/// What the controller sees this cycle: the mapper's estimate and grid, or (steering by truth)
-/// the true pose and no grid, since the grid lives in the estimate frame.
+/// What the controller sees this cycle: `frame` (the true pose already removed), the mapper's
+/// estimate and grid, or (controller.pose: truth, a diagnostic) the true pose and no grid,
+/// since the grid lives in the estimate frame.
 mapper::nav::NavInput nav_input(const ControllerConfig& c, const mapper::SensorFrame& frame,
+                                const std::optional<mapper::Pose2>& true_pose,
                                 const mapper::Mapper& mapper, const mapper::RobotGeometry& robot) {
-  if (c.steer_by_truth && frame.true_pose) return {&frame, *frame.true_pose, nullptr, &robot};
+  if (c.steer_by_truth && true_pose) return {&frame, *true_pose, nullptr, &robot};
   return {&frame, mapper.pose_estimate(), &mapper.grid(), &robot};
+}
+
+/// The frame as the robot's own software sees it: everything but the true pose, which only
+/// the metrics (and the diagnostic truth controller) may read.
+mapper::SensorFrame without_truth(const mapper::SensorFrame& frame) {
+  mapper::SensorFrame seen = frame;
+  seen.true_pose.reset();
+  return seen;
 }
 
 /// The frame loop and its products, kept apart from the writing of files.
@@ -78,6 +90,25 @@ struct SessionResult {
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
 };
+
+/// The nav block from the controller's own account and what the robot itself measured.
+NavMetrics nav_metrics(const mapper::nav::Controller& controller, const ControllerConfig& c,
+                       const SessionResult& session, double stalled_s) {
+  NavMetrics nav;
+  const mapper::nav::NavTrace& t = controller.trace();
+  nav.route_completed = session.route_completed;
+  if (c.type == ControllerKind::kRoute) nav.waypoints_total = c.waypoints.size();
+  nav.waypoints_skipped = t.skipped_waypoints;
+  nav.recoveries = t.recoveries;
+  nav.door_passages = t.door_passages;
+  nav.distance_m = odometry_distance_m(session.rows);
+  nav.stalled_s = stalled_s;
+  if (c.type == ControllerKind::kExplore) {
+    if (t.rooms_visited > 0) nav.rooms_visited = t.rooms_visited;  // when the explorer counts
+    nav.exploration_complete = controller.done();
+  }
+  return nav;
+}
 
 }  // namespace
 
@@ -107,9 +138,14 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   const fs::path out = options.out_dir;
   const bool want_figures = options.figures.value_or(experiment.figures);
   const bool figures = want_figures;
+  // Held to the end of the session: no second writer (thread or process) enters `out`.
+  std::optional<RunDirectoryLock> lock;
   try {
-    clear_run_outputs(out);
-    mapper::io::write_file_atomic(out / "experiment.yaml", experiment.resolved_yaml);
+    check_run_directory(out, {experiment.file});  // before the lock file is created in it
+    lock.emplace(out);
+    prepare_run_directory(out, experiment);
+  } catch (const RunDirectoryError&) {
+    throw;
   } catch (const std::exception& e) {
     throw RunError(std::string("cannot prepare the run directory: ") + e.what());
   }
@@ -139,13 +175,18 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     throw RunError("controller.pose: truth needs ground truth (a simulated robot)");
   }
   SessionResult session;
+  double stalled_s = 0.0;  // time with a stall flag set (nav block)
   const auto wall_start = Clock::now();
   try {
     double next_progress_s = 0.0;
+    double last_time_s = 0.0;
     while (true) {
       const std::optional<mapper::SensorFrame> frame = robot.next_frame();
       if (!frame) break;
-      mapper.process(*frame);
+      const mapper::SensorFrame seen = without_truth(*frame);
+      mapper.process(seen);
+      stalled_s += (seen.stall_left || seen.stall_right) ? seen.time_s - last_time_s : 0.0;
+      last_time_s = seen.time_s;
       session.rows.push_back(
           {frame->time_s, frame->true_pose, mapper.odometry_pose(), mapper.pose_estimate()});
       session.sim_time_s = frame->time_s;
@@ -154,8 +195,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
         next_progress_s = std::floor(frame->time_s) + 1.0;
       }
       if (frame->time_s >= experiment.duration_s) break;
-      if (experiment.controller.type == ControllerKind::kRoute && controller->done()) break;
-      robot.command(controller->step(nav_input(experiment.controller, *frame, mapper, geometry)));
+      if (controller->done()) break;  // a finished route, or an exploration with no exit left
+      robot.command(controller->step(
+          nav_input(experiment.controller, seen, frame->true_pose, mapper, geometry)));
     }
     robot.stop();
     mapper.finish();
@@ -170,7 +212,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   }
   session.wall_time_s = seconds(Clock::now() - wall_start - figure_time);
   if (experiment.controller.type == ControllerKind::kRoute) {
-    session.route_completed = controller->done();
+    // Completed means every waypoint reached or passed: a route that ended by giving
+    // waypoints up is finished, not completed (nav.waypoints_skipped says how many).
+    session.route_completed = controller->done() && controller->skipped_waypoints() == 0;
   }
 
   RunSummary summary;
@@ -188,6 +232,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       experiment.mapper.localization == mapper::LocalizationKind::kEm ? "em" : "none";
   m.frames = session.rows.size();
   m.route_completed = session.route_completed;
+  m.nav = nav_metrics(*controller, experiment.controller, session, stalled_s);
   m.sim_time_s = session.sim_time_s;
   m.wall_time_s = session.wall_time_s;
   const mapper::MapperStats& stats = mapper.stats();
@@ -234,6 +279,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, mo);
       m.map_odometry = evaluate_map(segments_of(odometry), truth->surfaces, visible, mo);
       m.localization = evaluate_trajectory(session.rows);
+      add_contacts(m.nav, session.rows, truth->surfaces, geometry);
     }
 
     mapper::io::write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows));

@@ -17,11 +17,23 @@ yaml::Node robot_block_of(const Experiment& experiment) {
                           : yaml::Node::load_string("{}", experiment.file.string());
 }
 
+// The world named by `world:`; when the file itself cannot be read (missing, a device, too
+// large) the error names the experiment's `world` key and line rather than the bare path.
+sim::WorldSpec load_world_of(const Experiment& experiment) {
+  try {
+    return sim::load_world(experiment.world);
+  } catch (const yaml::ConfigError& e) {
+    if (e.line() > 0 || e.file() != experiment.world.string()) throw;
+    throw yaml::ConfigError(experiment.file.string(), experiment.world_line, "world",
+                            "world file " + experiment.world.string() + ": " + bare_message(e));
+  }
+}
+
 }  // namespace
 
 void validate_experiment(const Experiment& experiment) {
   if (experiment.robot_source != RobotSource::kSim) return;  // the hw module checks its own
-  (void)sim::load_world(experiment.world);
+  (void)load_world_of(experiment);
   (void)sim::parse_sim_robot_options(robot_block_of(experiment));
 }
 
@@ -34,7 +46,7 @@ RunSummary run_experiment(const Experiment& experiment, const RunOptions& option
                             "'cogmap run' simulates; use 'cogmap drive' or 'cogmap replay' for '" +
                                 std::string(to_string(experiment.robot_source)) + "'");
   }
-  sim::WorldSpec world = sim::load_world(experiment.world);
+  sim::WorldSpec world = load_world_of(experiment);
   if (experiment.start) world.start = *experiment.start;
   const sim::SimRobotOptions robot_options = sim::parse_sim_robot_options(robot_block);
   std::unique_ptr<sim::SimRobot> robot;

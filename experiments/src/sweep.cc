@@ -1,7 +1,10 @@
 #include "cogmap/experiments/sweep.h"
 
 #include <charconv>
+#include <map>
 #include <stdexcept>
+
+#include "cogmap/experiments/run_directory.h"
 
 #include "cogmap/sim/yaml_strict.h"
 
@@ -30,11 +33,7 @@ std::size_t parse_count(const std::string& text, const std::string& whole) {
 std::string SweepRun::dir_name() const {
   std::string out;
   for (const auto& [key, value] : values) {
-    std::string v = value;
-    for (char& c : v) {
-      if (c == '/' || c == ' ') c = '_';
-    }
-    out += key + "=" + v + ",";
+    out += safe_path_component(key) + "=" + safe_path_component(value) + ",";
   }
   return out + "seed=" + std::to_string(seed);
 }
@@ -45,7 +44,7 @@ std::vector<std::string> SweepRun::overrides() const {
   return out;
 }
 
-SweepSpec load_sweep(const std::filesystem::path& path) {
+SweepSpec load_sweep(const std::filesystem::path& path, const SweepLimits& limits) {
   const yaml::Node root = yaml::Node::load_file(path);
   root.expect_keys({"base", "seeds", "vary", "description"});
   SweepSpec spec;
@@ -54,11 +53,31 @@ SweepSpec load_sweep(const std::filesystem::path& path) {
   const std::filesystem::path base(root.get<std::string>("base"));
   spec.base = (base.is_absolute() ? base : path.parent_path() / base).lexically_normal();
   const yaml::Node seeds = root["seeds"];
+  if (seeds.is_sequence() && seeds.size() > limits.max_runs) {
+    seeds.fail("more seeds than the " + std::to_string(limits.max_runs) + "-run sweep limit");
+  }
   seeds.expect_sequence();
   if (seeds.size() == 0) seeds.fail("needs at least one seed");
+  std::map<std::uint64_t, int> seed_lines;
   for (std::size_t i = 0; i < seeds.size(); ++i) {
-    spec.seeds.push_back(seeds.at(i).as<std::uint64_t>());
+    const yaml::Node s = seeds.at(i);
+    const std::uint64_t seed = s.as<std::uint64_t>();
+    if (const auto [it, fresh] = seed_lines.emplace(seed, s.line()); !fresh) {
+      s.fail("seed " + std::to_string(seed) + " is listed twice (also line " +
+             std::to_string(it->second) + ")");
+    }
+    spec.seeds.push_back(seed);
   }
+  // Counted before anything is expanded, with overflow in mind: a product of 10^7 runs must be
+  // an error message, not bad_alloc.
+  std::size_t total = spec.seeds.size();
+  const auto count = [&](std::size_t n, const yaml::Node& at) {
+    if (n != 0 && total > limits.max_runs / n) {
+      at.fail("the sweep has more than " + std::to_string(limits.max_runs) +
+              " runs (the sweep-size limit; raise it with --max-runs)");
+    }
+    total *= n;
+  };
   if (const auto vary = root.child("vary")) {
     for (const std::string& key : vary->keys()) {
       const yaml::Node values = (*vary)[key];
@@ -66,9 +85,21 @@ SweepSpec load_sweep(const std::filesystem::path& path) {
       if (values.size() == 0) values.fail("needs at least one value");
       if (key == "seed") values.fail("vary the seed with 'seeds', not under 'vary'");
       SweepAxis axis{key, {}};
+      // Two values with the same run directory name are the same run (55 and "55"), or two
+      // runs writing one directory ("a b" and "a_b"): both are refused.
+      std::map<std::string, std::pair<std::string, int>> by_dir;
       for (std::size_t i = 0; i < values.size(); ++i) {
-        axis.values.push_back(flow_text(values.at(i).raw()));
+        const yaml::Node v = values.at(i);
+        const std::string text = flow_text(v.raw());
+        const auto [it, fresh] =
+            by_dir.emplace(safe_path_component(text), std::pair{text, v.line()});
+        if (!fresh) {
+          v.fail("value '" + text + "' repeats '" + it->second.first + "' (line " +
+                 std::to_string(it->second.second) + "): same run directory name");
+        }
+        axis.values.push_back(text);
       }
+      count(axis.values.size(), values);
       spec.vary.push_back(std::move(axis));
     }
   }

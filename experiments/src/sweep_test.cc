@@ -103,5 +103,52 @@ TEST(Sweep, StrictErrors) {
             std::string::npos);
 }
 
+std::string sweep_error(const std::string& text, SweepLimits limits = {}) {
+  try {
+    // A file per test: ctest -j runs the tests of this file in parallel processes.
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    (void)load_sweep(write_temp(name + ".yaml", text), limits);
+  } catch (const yaml::ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Sweep, DuplicateSeedsAndValuesAreRefused) {
+  EXPECT_NE(sweep_error("base: b.yaml\nseeds:\n  - 1\n  - 2\n  - 1\n")
+                .find(":5: seeds[2]: seed 1 is listed twice (also line 3)"),
+            std::string::npos);
+  // 55 and "55" are the same --set value and the same run directory.
+  EXPECT_NE(sweep_error("base: b.yaml\nseeds: [1]\nvary:\n  mapper.cell_scale_mm: [55, \"55\"]\n")
+                .find(":4: vary.mapper.cell_scale_mm[1]: value '55' repeats '55' (line 4)"),
+            std::string::npos);
+  // Distinct values whose directory names collide would have two threads write one directory.
+  EXPECT_NE(sweep_error("base: b.yaml\nseeds: [1]\nvary:\n  name: [\"a b\", a_b]\n")
+                .find("value 'a_b' repeats 'a b'"),
+            std::string::npos);
+}
+
+TEST(Sweep, RunCountLimitIsCheckedBeforeExpansion) {
+  // 10 seeds x 10^6 combinations: refused at the 4th axis (10^5 runs), none listed.
+  std::string text = "base: b.yaml\nseeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\nvary:\n";
+  for (const char* key : {"a", "b", "c", "d", "e", "f"}) {
+    text += std::string("  ") + key + ": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n";
+  }
+  EXPECT_NE(sweep_error(text).find(":7: vary.d: the sweep has more than 10000 runs"),
+            std::string::npos)
+      << sweep_error(text);
+  // The limit is an option: exactly at it is fine, one above is not.
+  const std::string six = "base: b.yaml\nseeds: [1, 2]\nvary:\n  a: [1, 2, 3]\n";
+  EXPECT_EQ(sweep_error(six, SweepLimits{6}), "no error");
+  EXPECT_NE(sweep_error(six, SweepLimits{5}).find("more than 5 runs"), std::string::npos);
+}
+
+TEST(Sweep, DirectoryNamesCannotLeaveRuns) {
+  SweepRun run;
+  run.values = {{"a/../../b", "../x y"}, {"c", "/etc"}};
+  run.seed = 3;
+  EXPECT_EQ(run.dir_name(), "a_.._.._b=_.._x_y,c=_etc,seed=3");
+}
+
 }  // namespace
 }  // namespace cogmap::experiments

@@ -1,6 +1,8 @@
 // CARMEN and Player 2.x log importers.
 #include "cogmap/hw/log_import.h"
 
+#include "log_checks.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -55,7 +57,8 @@ class Fields {
 };
 
 std::ifstream open_or_throw(const std::filesystem::path& path) {
-  std::ifstream in(path);
+  detail::require_regular_file(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw LogError(path.string() + ": cannot open log: " + std::strerror(errno));
   return in;
 }
@@ -71,6 +74,25 @@ mapper::SonarReading reading(int index, double range_m, double time_s,
   return r;
 }
 
+// Appends a frame after the checks every log gets (finite, time order, no jump).
+void push_frame(ImportedLog& log, mapper::SensorFrame frame, const std::filesystem::path& path,
+                std::size_t line_no) {
+  const std::string where = path.string() + ":" + std::to_string(line_no);
+  detail::check_geometry(log.geometry, where);  // SONAR and geometry lines may change it
+  detail::check_frame(frame, log.frames.empty() ? nullptr : &log.frames.back(), log.geometry,
+                      LogLimits{}, where);
+  log.frames.push_back(std::move(frame));
+}
+
+// A file with none of the lines an importer reads is not a log of that format.
+void require_frames(const ImportedLog& log, const std::filesystem::path& path, const char* format,
+                    const char* lines) {
+  if (log.frames.empty()) {
+    throw LogError(path.string() + ": no " + lines + " lines: not a " + format +
+                   " log, or an empty one (" + std::to_string(log.ignored_lines) + " other lines)");
+  }
+}
+
 }  // namespace
 
 ImportedLog import_carmen_log(const std::filesystem::path& path) {
@@ -81,7 +103,7 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
   std::optional<double> t0;
   std::string text;
   std::size_t line_no = 0;
-  while (std::getline(in, text)) {
+  while (detail::read_bounded_line(in, text, path, line_no + 1, LogLimits{})) {
     ++line_no;
     auto tokens = tokens_of(text);
     if (tokens.empty() || tokens[0][0] == '#') continue;
@@ -96,7 +118,7 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
       frame.time_s = ts - *t0;
       frame.odometry = {f.number(1, "x"), f.number(2, "y"),
                         mapper::wrap_angle_rad(f.number(3, "theta"))};
-      log.frames.push_back(frame);
+      push_frame(log, std::move(frame), path, line_no);
     } else if (kind == "SONAR") {
       const double cone_rad = f.number(1, "cone_angle (rad)");
       const long n = f.integer(2, "num_sonars", 0, 255);
@@ -132,11 +154,12 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
                                       f.number(3 + static_cast<std::size_t>(i), "range"),
                                       frame.time_s, log.geometry));
       }
-      log.frames.push_back(frame);
+      push_frame(log, std::move(frame), path, line_no);
     } else {
       ++log.ignored_lines;
     }
   }
+  require_frames(log, path, "CARMEN", "ODOM or SONAR");
   return log;
 }
 
@@ -157,10 +180,10 @@ ImportedLog import_player_log(const std::filesystem::path& path) {
     frame.time_s = pending_time_s;
     frame.odometry = odometry;
     frame.stall_left = frame.stall_right = stall;
-    log.frames.push_back(frame);
+    push_frame(log, std::move(frame), path, line_no);
     pending_position = false;
   };
-  while (std::getline(in, text)) {
+  while (detail::read_bounded_line(in, text, path, line_no + 1, LogLimits{})) {
     ++line_no;
     auto tokens = tokens_of(text);
     if (tokens.empty() || tokens[0][0] == '#') continue;
@@ -211,12 +234,13 @@ ImportedLog import_player_log(const std::filesystem::path& path) {
                                       log.geometry));
       }
       pending_position = false;  // this frame carries the latest position
-      log.frames.push_back(frame);
+      push_frame(log, std::move(frame), path, line_no);
     } else {
       ++log.ignored_lines;
     }
   }
   flush_position();
+  require_frames(log, path, "Player", "position2d or sonar");
   return log;
 }
 
@@ -224,7 +248,7 @@ LogFormat detect_log_format(const std::filesystem::path& path) {
   std::ifstream in = open_or_throw(path);
   std::string text;
   std::size_t line_no = 0;
-  while (std::getline(in, text) && line_no < 1000) {
+  while (line_no < 1000 && detail::read_bounded_line(in, text, path, line_no + 1, LogLimits{})) {
     ++line_no;
     if (text.rfind("## Player", 0) == 0) return LogFormat::kPlayer;
     const auto t = tokens_of(text);

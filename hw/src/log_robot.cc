@@ -40,6 +40,11 @@ LogReader validated(const std::filesystem::path& path, std::size_t& frames, std:
       last_time_s = f->time_s;
     }
   }
+  // A header alone would "map" nothing and exit 0 with 0 rooms: that is a wrong file.
+  if (frames == 0) {
+    throw LogError(path.string() + ":" + std::to_string(check.line()) +
+                   ": the log has a header but no frames (F lines): nothing to replay");
+  }
   return LogReader(path);
 }
 }  // namespace

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "cogmap/mapper/seam/robot_models.h"
+
 namespace cogmap::hw {
 
 using Clock = std::chrono::steady_clock;
@@ -50,7 +52,9 @@ std::optional<p2os::Packet> P2osRobot::read_packet(milliseconds timeout) {
 bool P2osRobot::handshake() {
   using p2os::Command;
   decoder_.clear();
-  for (int attempt = 0; attempt < options_.sync_attempts; ++attempt) {
+  const auto give_up = Clock::now() + options_.handshake_timeout;
+  int attempts = 0;
+  for (; attempts < options_.sync_attempts && Clock::now() < give_up; ++attempts) {
     {
       std::lock_guard lock(mutex_);
       if (stopping_) break;
@@ -58,10 +62,13 @@ bool P2osRobot::handshake() {
     int step = 0;
     send(p2os::encode_command(Command::kSync0));
     bool restart = false;
+    // Each step has one deadline, however many other packets arrive meanwhile.
+    auto step_deadline = std::min(give_up, Clock::now() + options_.sync_reply_timeout);
     while (step < 3 && !restart) {
-      const auto packet = read_packet(options_.sync_reply_timeout);
+      const auto left = std::chrono::duration_cast<milliseconds>(step_deadline - Clock::now());
+      const auto packet = left.count() > 0 ? read_packet(left) : std::nullopt;
       if (!packet) {
-        restart = true;  // no echo: start again from SYNC0
+        restart = true;  // no echo in time: start again from SYNC0
         break;
       }
       const std::uint8_t type = packet->type();
@@ -74,7 +81,7 @@ bool P2osRobot::handshake() {
           ++stats_.left_open_recoveries;
         }
         // Discard what is still in flight so a stale SIP does not trigger another CLOSE.
-        const auto drain_until = Clock::now() + milliseconds(300);
+        const auto drain_until = std::min(give_up, Clock::now() + milliseconds(300));
         while (Clock::now() < drain_until) read_packet(milliseconds(50));
         decoder_.clear();
         restart = true;
@@ -85,12 +92,20 @@ bool P2osRobot::handshake() {
         try {
           const p2os::RobotIdentity id = p2os::decode_sync2(packet->body);
           const auto factors = p2os::conversion_for_subclass(id.subclass);
-          if (!factors) {
+          const mapper::RobotModel* model = mapper::find_robot_model(id.subclass);
+          // The geometry is fixed for the robot's lifetime: a reconnection must find the same
+          // kind of robot.
+          const bool changed = !identity_.subclass.empty() && model &&
+                               model->name != mapper::find_robot_model(identity_.subclass)->name;
+          if (!factors || !model || changed) {
             std::lock_guard lock(mutex_);
-            failure_ = "robot '" + id.name + "' is a " + id.klass + " '" + id.subclass +
-                       "', not a p2at, p2at8 or p2at8+";
+            failure_ = "robot '" + id.name + "' is a " + id.klass + " '" + id.subclass + "', " +
+                       (changed ? "not the " + identity_.subclass + " connected before"
+                                : "not a known Pioneer (" + mapper::robot_model_names() +
+                                      " and their -sh/8+ variants)");
             return false;
           }
+          geometry_ = model->geometry;  // sonar mounts and limits of the model SYNC2 names
           factors_ = *factors;
           odometry_.set_factors(factors_);
           std::lock_guard lock(mutex_);
@@ -103,6 +118,7 @@ bool P2osRobot::handshake() {
       }
       ++step;
       if (step < 3) send(p2os::encode_command(static_cast<Command>(step)));
+      step_deadline = std::min(give_up, Clock::now() + options_.sync_reply_timeout);
     }
     if (step == 3) {
       send(p2os::encode_command(Command::kOpen));
@@ -118,7 +134,12 @@ bool P2osRobot::handshake() {
     }
   }
   std::lock_guard lock(mutex_);
-  failure_ = "no SYNC reply after " + std::to_string(options_.sync_attempts) + " attempts";
+  const auto spent = std::chrono::duration_cast<milliseconds>(
+      Clock::now() - (give_up - options_.handshake_timeout));
+  failure_ = "no complete SYNC0-2 exchange in " + std::to_string(attempts) + " attempts, " +
+             std::to_string(spent.count()) + " ms (limits " +
+             std::to_string(options_.sync_attempts) + " attempts, " +
+             std::to_string(options_.handshake_timeout.count()) + " ms)";
   return false;
 }
 
@@ -298,6 +319,7 @@ void P2osRobot::shutdown() {
   if (thread_.joinable()) thread_.join();
   std::lock_guard lock(mutex_);
   finished_ = true;
+  frames_.clear();  // as documented: no frames after shutdown, not even queued ones
 }
 
 p2os::RobotIdentity P2osRobot::identity() const {

@@ -100,7 +100,10 @@ TEST(P2osRobotPty, HandshakeFramesSonarAndCommands) {
   EXPECT_NEAR(served.body().current().v_mps, 0.75, 1e-9);
   EXPECT_NEAR(served.body().current().w_radps, -100.0 * M_PI / 180.0, 1e-9);  // 99.7 -> 100 deg/s
   robot.shutdown();
-  EXPECT_FALSE(robot.next_frame().has_value() && false);
+  // After shutdown there are no frames, queued or new, and next_frame() does not wait.
+  const auto asked = std::chrono::steady_clock::now();
+  EXPECT_FALSE(robot.next_frame().has_value());
+  EXPECT_LT(std::chrono::steady_clock::now() - asked, 100ms);
   std::this_thread::sleep_for(300ms);
   EXPECT_NEAR(served.body().current().v_mps, 0.0, 1e-9);  // STOP, CLOSE at shutdown
   EXPECT_EQ(served.server().stats().syncs, 1u);
@@ -294,16 +297,67 @@ TEST(P2osRobotPty, NoAnswerThrowsNamingTheDevice) {
   }
 }
 
+TEST(P2osRobotHandshake, PeerEchoingTheWrongPacketForeverTimesOut) {
+  // A peer that answers every SYNC with a SYNC0 echo, forever: each packet is valid, none is
+  // the SYNC1 the handshake waits for. The handshake must give up at handshake_timeout.
+  auto [ours, theirs] = make_memory_pair();
+  std::atomic<bool> stop{false};
+  std::thread peer([&, link = theirs.get()] {
+    std::uint8_t buf[64];
+    while (!stop) {
+      try {
+        (void)link->read(buf, 100ms);
+        link->write(p2os::encode_command(p2os::Command::kSync0));
+      } catch (const StreamError&) {
+        return;  // our end closed
+      }
+    }
+  });
+  P2osRobotOptions o;
+  o.sync_reply_timeout = 300ms;
+  o.sync_attempts = 1000000;  // only the overall timeout can end it
+  o.handshake_timeout = 1500ms;
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    P2osRobot robot(std::move(ours), o);
+    FAIL() << "expected StreamError";
+  } catch (const StreamError& e) {
+    EXPECT_NE(std::string(e.what()).find("no complete SYNC0-2 exchange"), std::string::npos)
+        << e.what();
+  }
+  const auto took = std::chrono::steady_clock::now() - started;
+  EXPECT_GE(took, 1400ms);
+  EXPECT_LT(took, 2500ms);
+  stop = true;
+  peer.join();
+}
+
+TEST(P2osRobotPty, Sync2SubclassPicksTheRobotModel) {
+  // p3dx-sh.p: the P3-DX ring (SonarUnit 3 at 166, 27 mm, 10°), 1 m/s in AMRISim's model.
+  P2osServerOptions so;
+  so.identity = {"dx", "Pioneer", "p3dx-sh"};
+  PtyRobot served(so);
+  served.start();
+  P2osRobot robot(served.client(), fast_options());
+  EXPECT_EQ(robot.identity().subclass, "p3dx-sh");
+  ASSERT_EQ(robot.geometry().sonars.size(), 16u);
+  EXPECT_DOUBLE_EQ(robot.geometry().sonars[3].x_m, 0.166);
+  EXPECT_DOUBLE_EQ(robot.geometry().width_m, 0.425);
+  EXPECT_DOUBLE_EQ(robot.geometry().max_speed_mps, 1.0);
+  robot.shutdown();
+}
+
 TEST(P2osRobotPty, WrongSubclassIsRejected) {
   P2osServerOptions so;
-  so.identity = {"dx", "Pioneer", "p3dx"};
+  so.identity = {"jr", "Pioneer", "seekurjr"};  // a MobileRobots robot, but no Pioneer
   PtyRobot served(so);
   served.start();
   try {
     P2osRobot robot(served.client(), fast_options());
     FAIL() << "expected StreamError";
   } catch (const StreamError& e) {
-    EXPECT_NE(std::string(e.what()).find("p3dx"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'seekurjr', not a known Pioneer"), std::string::npos)
+        << e.what();
   }
 }
 

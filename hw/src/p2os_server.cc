@@ -20,6 +20,32 @@ std::optional<int> command_int_argument(const p2os::Packet& packet) {
   return std::nullopt;
 }
 
+std::optional<std::string> command_string_argument(const p2os::Packet& packet) {
+  const auto& b = packet.body;
+  if (b.size() < 3 || b[1] != p2os::kArgString) return std::nullopt;
+  const std::size_t length = b[2];
+  if (3 + length > b.size()) return std::nullopt;
+  std::string text(b.begin() + 3, b.begin() + 3 + static_cast<std::ptrdiff_t>(length));
+  if (const auto nul = text.find('\0'); nul != std::string::npos) text.resize(nul);
+  return text;
+}
+
+std::optional<std::vector<std::pair<int, std::vector<int>>>> split_polling(
+    const std::string& numbers) {
+  std::vector<std::pair<int, std::vector<int>>> arrays;
+  for (const char c : numbers) {
+    const int number = static_cast<unsigned char>(c);
+    if (number < 1 || number > 32) return std::nullopt;
+    const int array = (number - 1) / 8;
+    auto it =
+        std::find_if(arrays.begin(), arrays.end(), [&](const auto& a) { return a.first == array; });
+    if (it == arrays.end()) it = arrays.insert(arrays.end(), {array, {}});
+    if (it->second.size() == 16) return std::nullopt;
+    it->second.push_back(number - 1);
+  }
+  return arrays;
+}
+
 P2osServer::P2osServer(ByteStream& stream, mapper::Robot& body, P2osServerOptions options)
     : stream_(stream), body_(body), options_(std::move(options)) {
   factors_ =
@@ -87,6 +113,40 @@ void P2osServer::handle(const p2os::Packet& packet) {
     case Command::kSonar:
       sonar_on_ = arg.value_or(0) != 0;
       break;
+    case Command::kSonarCycle:
+      if (!arg || *arg < 2 || *arg > 120) {
+        if (options_.log) options_.log("SONAR_CYCLE outside 2-120 ms ignored");
+      } else if (options_.set_sonar_cycle_ms) {
+        try {
+          options_.set_sonar_cycle_ms(*arg);
+        } catch (const std::invalid_argument& e) {
+          if (options_.log) options_.log(std::string("SONAR_CYCLE ignored: ") + e.what());
+        }
+      }
+      break;
+    case Command::kPolling: {
+      const std::optional<std::string> text = command_string_argument(packet);
+      if (!text) break;
+      // ARCOS: an empty string disables the sonar but keeps the sequences.
+      if (text->empty()) {
+        sonar_on_ = false;
+        break;
+      }
+      const auto arrays = split_polling(*text);
+      if (!arrays) {
+        if (options_.log) options_.log("POLLING with a number outside 1-32 ignored");
+        break;
+      }
+      for (const auto& [array, sequence] : *arrays) {
+        if (!options_.set_sonar_polling) break;
+        try {
+          options_.set_sonar_polling(array, sequence);
+        } catch (const std::invalid_argument& e) {
+          if (options_.log) options_.log(std::string("POLLING ignored: ") + e.what());
+        }
+      }
+      break;
+    }
     case Command::kVel:
       if (motors_ && arg) set_motion(*arg * factors_.velocity_mmps_per_unit / 1000.0, w_radps_);
       break;

@@ -212,19 +212,26 @@ std::optional<ConversionFactors> conversion_for_subclass(const std::string& subc
   std::string s = subclass;
   std::transform(s.begin(), s.end(), s.begin(),
                  [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  // DistConvFactor and RangeConvFactor of ARIA's params/<subclass>.p; every one of these has
+  // AngleConvFactor 2π/4096 and VelConvFactor 1.0 (the defaults of ConversionFactors).
+  struct Entry {
+    const char* subclass;
+    double distance_mm_per_unit, sonar_mm_per_unit;
+  };
+  static constexpr Entry kTable[] = {
+      {"p2at", 1.32, 0.268}, {"p2at8", 1.32, 1.0},  {"p2at8+", 0.465, 1.0},
+      {"p3at", 0.465, 1.0},  {"p3at-sh", 1.0, 1.0}, {"p3dx", 0.485, 1.0},
+      {"p3dx-sh", 1.0, 1.0}, {"p2dx", 0.84, 0.268}, {"p2de", 0.969, 0.268},
+      {"p2d8", 0.485, 1.0},  {"p2d8+", 0.485, 1.0}, {"peoplebot-sh", 1.0, 1.0},
+  };
   ConversionFactors f;
-  if (s == "p2at") {
-    f.distance_mm_per_unit = 1.32;
-    f.sonar_mm_per_unit = 0.268;
-  } else if (s == "p2at8") {
-    f.distance_mm_per_unit = 1.32;
-    f.sonar_mm_per_unit = 1.0;
-  } else if (s == "p2at8+") {
-    f.distance_mm_per_unit = 0.465;
-    f.sonar_mm_per_unit = 1.0;
-  } else {
-    return std::nullopt;
+  const Entry* found = nullptr;
+  for (const Entry& e : kTable) {
+    if (s == e.subclass) found = &e;
   }
+  if (!found) return std::nullopt;
+  f.distance_mm_per_unit = found->distance_mm_per_unit;
+  f.sonar_mm_per_unit = found->sonar_mm_per_unit;
   return f;
 }
 

@@ -1,7 +1,10 @@
 // The cogmap robot log: formatting with round-trip numbers, strict line parsing.
 #include "cogmap/hw/robot_log.h"
 
+#include "log_checks.h"
+
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -50,8 +53,9 @@ class LineParser {
   double to_number(const std::string& token, const std::string& what) const {
     double v = 0.0;
     const auto r = std::from_chars(token.data(), token.data() + token.size(), v);
-    if (r.ec != std::errc() || r.ptr != token.data() + token.size())
-      fail(what + " (number)", token);
+    if (r.ec != std::errc() || r.ptr != token.data() + token.size() || !std::isfinite(v)) {
+      fail(what + " (a finite number)", token);
+    }
     return v;
   }
   long integer(const std::string& what, long lo, long hi) {
@@ -137,10 +141,13 @@ std::string format_command_line(double time_s, const mapper::VelocityCommand& cm
 
 std::string format_stop_line(double time_s) { return "S " + num(time_s); }
 
-LogReader::LogReader(const std::filesystem::path& path) : path_(path), in_(path) {
+LogReader::LogReader(const std::filesystem::path& path, const LogLimits& limits)
+    : path_(path), limits_(limits) {
+  detail::require_regular_file(path);
+  in_.open(path, std::ios::binary);
   if (!in_) throw LogError(path.string() + ": cannot open log: " + std::strerror(errno));
   std::string text;
-  while (std::getline(in_, text)) {
+  while (detail::read_bounded_line(in_, text, path_, line_no_ + 1, limits_)) {
     ++line_no_;
     if (text.empty() || text[0] == '#') continue;
     LineParser p(path_, line_no_, text);
@@ -166,6 +173,7 @@ LogReader::LogReader(const std::filesystem::path& path) : path_(path), in_(path)
                                   p.to_number(f[2], "sonar heading_rad")});
     }
     p.end();
+    detail::check_geometry(geometry_, path_.string() + ":" + std::to_string(line_no_) + ": header");
     return;
   }
   throw LogError(path.string() + ":" + std::to_string(line_no_ + 1) +
@@ -174,7 +182,7 @@ LogReader::LogReader(const std::filesystem::path& path) : path_(path), in_(path)
 
 std::optional<std::variant<mapper::SensorFrame, LoggedCommand>> LogReader::next() {
   std::string text;
-  while (std::getline(in_, text)) {
+  while (detail::read_bounded_line(in_, text, path_, line_no_ + 1, limits_)) {
     ++line_no_;
     if (text.empty() || text[0] == '#' || text == "\r") continue;
     LineParser p(path_, line_no_, text);
@@ -208,6 +216,10 @@ std::optional<std::variant<mapper::SensorFrame, LoggedCommand>> LogReader::next(
         f.sonar.push_back(reading);
       }
       p.end();
+      detail::check_frame(f, previous_ ? &*previous_ : nullptr, geometry_, limits_,
+                          path_.string() + ":" + std::to_string(line_no_));
+      previous_ = f;
+      previous_->sonar.clear();  // only time and pose are compared
       return f;
     }
     if (kind == "C" || kind == "S") {

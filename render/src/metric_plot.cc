@@ -129,7 +129,10 @@ void write_metric_plot(const std::string& title, const std::string& x_label,
     canvas.polyline(line, color, style.plot_line_width_px);
     canvas.points(line, color, style.plot_line_width_px * 3.5f);
   }
-  draw_panel_furniture(canvas, pl, "", "mean ± sd over seeds", legend, nullptr);
+  // Only sweeps carry error bars; a plain curve (e.g. the sonar echo model) says nothing of seeds.
+  const bool any_sd = std::any_of(series.begin(), series.end(),
+                                  [](const PlotSeries& s) { return !s.y_sd.empty(); });
+  draw_panel_furniture(canvas, pl, "", any_sd ? "mean ± sd over seeds" : "", legend, nullptr);
   write_png(canvas.finish(), png);
 }
 

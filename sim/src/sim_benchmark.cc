@@ -5,6 +5,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <random>
+#include <vector>
 
 #include "cogmap/sim/sim_robot.h"
 #include "cogmap/sim/world_geometry.h"
@@ -33,6 +35,33 @@ void BM_SimRobotNineRooms(benchmark::State& state) {
   state.counters["sim_s_per_wall_s"] = benchmark::Counter(sim_s, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SimRobotNineRooms)->Arg(10)->Arg(5)->Unit(benchmark::kMillisecond);
+
+// Sonar pings per second: every transducer of the P2-AT from 1000 random poses in a world
+// (docs/sonar-model.md "Speed"); the random poses include some inside furniture, as a fair mix.
+void BM_SonarPing(benchmark::State& state, const char* world_file) {
+  const cogmap::sim::WorldSpec world = cogmap::sim::load_world(world_path(world_file));
+  const cogmap::sim::SonarScene scene = cogmap::sim::surface_segments(world);
+  const auto [lo, hi] = cogmap::sim::world_bounds(world);
+  const cogmap::mapper::RobotGeometry geometry = cogmap::mapper::p2at_geometry();
+  cogmap::sim::SonarModel model(cogmap::sim::SonarModelOptions{}, geometry, 1);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), ut(-3.14, 3.14);
+  std::vector<cogmap::mapper::Pose2> poses;
+  for (int i = 0; i < 1000; ++i) poses.push_back({ux(rng), uy(rng), ut(rng)});
+  std::int64_t pings = 0;
+  for (auto _ : state) {
+    for (const auto& pose : poses) {
+      for (int s = 0; s < static_cast<int>(geometry.sonars.size()); ++s) {
+        benchmark::DoNotOptimize(model.ping(scene, pose, s, 0.0));
+        ++pings;
+      }
+    }
+  }
+  state.counters["pings_per_s"] =
+      benchmark::Counter(static_cast<double>(pings), benchmark::Counter::kIsRate);
+}
+BENCHMARK_CAPTURE(BM_SonarPing, nine_rooms, "nine_rooms.yaml")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SonarPing, hallway_loop, "hallway_loop.yaml")->Unit(benchmark::kMillisecond);
 
 void BM_WorldSurfaces(benchmark::State& state) {
   const cogmap::sim::WorldSpec world = cogmap::sim::load_world(world_path("hallway_loop.yaml"));

@@ -3,6 +3,7 @@
 // about as good as direct; the replay must rebuild exactly the live run's rooms.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
@@ -105,7 +106,13 @@ TEST(HwEndToEnd, ServedOverP2osMapsLikeDirectAndReplaysIdentically) {
   EXPECT_EQ(stats.dropped_bytes, 0u);
   ASSERT_TRUE(live.metrics.map.has_value());
   ASSERT_TRUE(live.metrics.map->wall_error_median_m.has_value());
-  EXPECT_GE(live.metrics.asr_count, 1u);
+  // finish() always stores one ASR, so "at least one" could not fail. Over the wire the SIPs
+  // carry the readings in other groupings, so a doorway crossed near the 75 s cut may close a
+  // room on one side only: at most one room apart from the direct run (the replay below must
+  // then match the live run exactly, room for room).
+  EXPECT_LE(std::max(live.metrics.asr_count, direct.metrics.asr_count) -
+                std::min(live.metrics.asr_count, direct.metrics.asr_count),
+            1u);
   std::cout << "wall error median: direct " << *direct.metrics.map->wall_error_median_m
             << " m, over P2OS " << *live.metrics.map->wall_error_median_m << " m; rooms "
             << direct.metrics.asr_count << " / " << live.metrics.asr_count << "\n";
@@ -132,7 +139,7 @@ TEST(HwEndToEnd, ServedOverP2osMapsLikeDirectAndReplaysIdentically) {
     EXPECT_EQ(slurp(entry.path()), slurp(twin)) << entry.path().filename();
     ++rooms;
   }
-  EXPECT_GE(rooms, 1u);
+  EXPECT_EQ(rooms, live.metrics.asr_count);  // every ASR the metrics count is on disk, twinned
 }
 
 }  // namespace

@@ -5,13 +5,8 @@ set -euo pipefail
 cogmap=$1 src=$2 out=$3
 rm -rf "$out" && mkdir -p "$out"
 exp="$src/experiments/two_rooms.yaml"
-"$cogmap" serve --experiment "$exp" --pty --cycle-ms 50 --duration 30 >"$out/serve.out" \
-  2>"$out/serve.err" &
-serve_pid=$!
-trap 'kill $serve_pid 2>/dev/null || true' EXIT
-for _ in $(seq 50); do [[ -s "$out/serve.out" ]] && break; sleep 0.1; done
-dev=$(head -1 "$out/serve.out")
-[[ -e "$dev" ]] || { echo "serve printed no device: '$dev'"; exit 1; }
+source "$(dirname "$0")/serve_pty.sh"
+start_serve "$cogmap" "$exp" "$out"
 "$cogmap" drive --port "$dev" --sip-clock --experiment "$exp" --duration 16 --record "$out/live.log" \
   --out "$out/live" --no-figures
 "$cogmap" replay "$out/live.log" --experiment "$exp" --out "$out/replay" --no-figures

@@ -3,6 +3,8 @@
 // (figures off), and leaves one ASR per room it was meant to map.
 #include <gtest/gtest.h>
 
+#include "source_dir.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -18,14 +20,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path source_dir() {
-  const char* src = std::getenv("COGMAP_SOURCE_DIR");
-  return src ? fs::path(src) : fs::path(__FILE__).parent_path().parent_path().parent_path();
-}
+using integration::source_dir;
 
 struct RouteCase {
   std::string experiment;
   int min_asrs;  ///< rooms the route visits (doorway ASRs) or its length / 4 m (distance ASRs)
+  /// At most this many: an extra doorway ASR is a spurious boundary. A single room (small
+  /// clutter) must give exactly one, which finish() alone would store: only the upper bound
+  /// can fail there. Values: docs/results.md (9 ± 0, 3, 76.8 ± 0.4 over five seeds).
+  int max_asrs;
 };
 
 /// Names the case in test output (gtest would print the struct's bytes).
@@ -48,13 +51,15 @@ TEST_P(RouteSmoke, CompletesTheRouteWithinTheTimeLimit) {
   EXPECT_TRUE(m["route_completed"].get<bool>()) << c.experiment;
   EXPECT_LT(m["timing"]["sim_time_s"].get<double>(), e.duration_s) << c.experiment;
   EXPECT_GE(m["asr_count"].get<int>(), c.min_asrs) << c.experiment;
+  EXPECT_LE(m["asr_count"].get<int>(), c.max_asrs) << c.experiment;
 }
 
 INSTANTIATE_TEST_SUITE_P(ThesisWorlds, RouteSmoke,
-                         ::testing::Values(RouteCase{"two_rooms", 2}, RouteCase{"nine_rooms", 9},
-                                           RouteCase{"three_room_slam", 3},
-                                           RouteCase{"hallway_loop", 60},
-                                           RouteCase{"small_clutter", 1}),
+                         ::testing::Values(RouteCase{"two_rooms", 2, 2},
+                                           RouteCase{"nine_rooms", 9, 9},
+                                           RouteCase{"three_room_slam", 3, 3},
+                                           RouteCase{"hallway_loop", 76, 78},
+                                           RouteCase{"small_clutter", 1, 1}),
                          [](const auto& info) { return info.param.experiment; });
 
 }  // namespace

@@ -2,6 +2,8 @@
 // metrics lie within honest bounds, and the same seed gives bit-identical results.
 #include <gtest/gtest.h>
 
+#include "source_dir.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -16,10 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-fs::path source_dir() {
-  const char* src = std::getenv("COGMAP_SOURCE_DIR");
-  return src ? fs::path(src) : fs::path(__FILE__).parent_path().parent_path().parent_path();
-}
+using integration::source_dir;
 
 std::string read(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -50,12 +49,15 @@ TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
 
   // Bounds (docs/results.md has the measured values). The route tours the west room, crosses
   // the 1 m doorway, tours the east room, and ends there: two ASRs.
-  EXPECT_GE(a["asr_count"].get<int>(), 2);
+  EXPECT_EQ(a["asr_count"].get<int>(), 2);
   EXPECT_TRUE(a["route_completed"].get<bool>());
   const Json& map = a["map"];
-  EXPECT_LT(map["wall_error_median_m"].get<double>(), 0.2);
-  EXPECT_GT(map["wall_coverage"].get<double>(), 0.25);
-  EXPECT_LT(map["spurious_fraction"].get<double>(), 0.2);
+  // Seed 7 is deterministic; docs/cli.md shows it: wall error 0.091 m, coverage 0.397,
+  // spurious 0.014 (0.039 with the material sonar model of 2026-11-29). The bounds sit just
+  // outside those, so a worse map fails.
+  EXPECT_LT(map["wall_error_median_m"].get<double>(), 0.12);
+  EXPECT_GT(map["wall_coverage"].get<double>(), 0.35);
+  EXPECT_LT(map["spurious_fraction"].get<double>(), 0.05);
   EXPECT_GT(map["grid_bytes"].get<double>(), 0.0);
   EXPECT_LT(map["compression_ratio"].get<double>(), 0.05);  // polylines << grids (Table 4.2)
   EXPECT_LT(a["localization"]["ate_rmse_m"]["corrected"].get<double>(), 1.0);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -75,6 +76,32 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   Fd directory{::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
   if (directory.fd < 0) fail_errno(dir, "cannot open directory");
   if (::fsync(directory.fd) != 0) fail_errno(dir, "cannot fsync directory");
+}
+
+bool is_temp_file_name(const std::string& name) {
+  // "." name ".tmp" sep digits sep digits, sep '-' (this file) or '.' (render/png_io.cc).
+  if (name.size() < 9 || name[0] != '.') return false;
+  std::size_t end = name.size();
+  for (int field = 0; field < 2; ++field) {
+    std::size_t start = end;
+    while (start > 0 && std::isdigit(static_cast<unsigned char>(name[start - 1]))) --start;
+    if (start == end || start == 0 || (name[start - 1] != '-' && name[start - 1] != '.')) {
+      return false;
+    }
+    end = start - 1;
+  }
+  return end > 5 && name.compare(end - 4, 4, ".tmp") == 0;
+}
+
+std::size_t remove_stale_temp_files(const std::filesystem::path& dir) {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    if (!is_temp_file_name(entry.path().filename().string())) continue;
+    std::error_code file_ec;
+    if (entry.is_regular_file(file_ec) && std::filesystem::remove(entry.path(), file_ec)) ++removed;
+  }
+  return removed;
 }
 
 std::string read_file(const std::filesystem::path& path) {

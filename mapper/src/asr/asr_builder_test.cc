@@ -79,8 +79,11 @@ TEST(BuildRoomPolylines, LShapedRoomWallsAreRecovered) { expect_walls_match(l_ro
 TEST(BuildRoomPolylines, TraceHoldsEveryStage) {
   const test::RasterRoom room = square_room();
   const AsrTrace trace = build_room_polylines(room.grid, room.path, AsrBuilderOptions{});
-  EXPECT_EQ(trace.raw.data()[0], room.grid.data()[0]);
-  EXPECT_EQ(trace.raw.width(), room.grid.width());
+  // The raw stage is the input grid, every cell of it (one cell, as before, was 0 in both).
+  ASSERT_EQ(trace.raw.width(), room.grid.width());
+  ASSERT_EQ(trace.raw.height(), room.grid.height());
+  const std::size_t cells = static_cast<std::size_t>(room.grid.width()) * room.grid.height();
+  EXPECT_TRUE(std::equal(trace.raw.data(), trace.raw.data() + cells, room.grid.data()));
   EXPECT_EQ(trace.cleaned.width(), room.grid.width());
   EXPECT_EQ(trace.robot_path.size(), room.path.size());
   ASSERT_EQ(trace.extracted.size(), 1u);

@@ -19,9 +19,12 @@ using SideWorld = std::function<double(double x_m)>;
 /// Drives the robot from x = 0 to `end_x_m` at 0.5 m/s with 10 Hz frames. The four side sonars
 /// of the P2-AT (0, 15 left; 7, 8 right) each fire every 0.4 s, staggered by 0.1 s, so a side
 /// gets a fresh reading every 0.2 s: the sparse firing of a real ring.
+/// The sonars are silent for sonar_stop_x_m <= x < sonar_resume_x_m; `event_x_m`, when given,
+/// receives the robot's x at each event.
 std::vector<BoundaryEvent> drive(AsrBoundaryDetector& detector, const SideWorld& left,
                                  const SideWorld& right, double end_x_m, bool sonar_after_x = true,
-                                 double sonar_stop_x_m = kInf) {
+                                 double sonar_stop_x_m = kInf, double sonar_resume_x_m = kInf,
+                                 std::vector<double>* event_x_m = nullptr) {
   const RobotGeometry robot = p2at_geometry();
   const int side_sonars[4] = {0, 7, 15, 8};
   std::vector<BoundaryEvent> events;
@@ -34,7 +37,7 @@ std::vector<BoundaryEvent> drive(AsrBoundaryDetector& detector, const SideWorld&
     frame.odometry = {x, 0.0, 0.0};
     const int slot = k % 4;
     const int index = side_sonars[slot];
-    if (sonar_after_x && x < sonar_stop_x_m) {
+    if (sonar_after_x && (x < sonar_stop_x_m || x >= sonar_resume_x_m)) {
       const SonarMount& m = robot.sonars[index];
       const double free_m = m.y_m > 0 ? left(x + m.x_m) : right(x + m.x_m);
       const double range_m = free_m - std::abs(m.y_m);
@@ -42,7 +45,10 @@ std::vector<BoundaryEvent> drive(AsrBoundaryDetector& detector, const SideWorld&
       if (range_m < robot.sonar_max_range_m) r = {index, range_m, true, t};
       frame.sonar.push_back(r);
     }
-    if (auto e = detector.update(frame, frame.odometry)) events.push_back(*e);
+    if (auto e = detector.update(frame, frame.odometry)) {
+      events.push_back(*e);
+      if (event_x_m) event_x_m->push_back(x);
+    }
   }
   return events;
 }
@@ -61,6 +67,37 @@ TEST(DoorwayDetector, RoomDoorRoomGivesExactlyOneEventAtTheDoor) {
   // The event comes after the door, not in the next room's middle.
   EXPECT_GT(events[0].time_s, 10.0);
   EXPECT_LT(events[0].time_s, 12.0);
+}
+
+// The robot's x at frame k of a trajectory that drives into the doorway of room_door_room to
+// x = 4.95 (inside the frame), backs out to x = 3.0, then drives through to x = 7.
+double in_back_out_through(int k) {
+  const double t = 0.1 * k;
+  if (t <= 9.9) return 0.05 * k;                      // 0 -> 4.95 at 0.5 m/s
+  if (t <= 9.9 + 3.9) return 4.95 - 0.05 * (k - 99);  // back to 3.0
+  return 3.0 + 0.05 * (k - 138);                      // forward through the door
+}
+
+TEST(DoorwayDetector, BackingOutOfADoorIsNoNewRoom) {
+  auto detector = make_doorway_detector(DoorwayOptions{}, p2at_geometry());
+  const RobotGeometry robot = p2at_geometry();
+  const int side_sonars[4] = {0, 7, 15, 8};
+  std::vector<double> event_x;
+  for (int k = 0; in_back_out_through(k) <= 7.0; ++k) {
+    const double x = in_back_out_through(k);
+    SensorFrame frame;
+    frame.time_s = 0.1 * k;
+    frame.odometry = {x, 0.0, 0.0};
+    const int index = side_sonars[k % 4];
+    const SonarMount& m = robot.sonars[index];
+    const double range_m = room_door_room(x + m.x_m) - std::abs(m.y_m);
+    frame.sonar.push_back({index, range_m, true, frame.time_s});
+    if (detector->update(frame, frame.odometry)) event_x.push_back(x);
+  }
+  // Backing out (both sides close, then free, 3.9 m of travel) made no room; the pass did.
+  ASSERT_EQ(event_x.size(), 1u);
+  EXPECT_GT(event_x[0], 5.2);
+  EXPECT_LT(event_x[0], 5.8);
 }
 
 TEST(DoorwayDetector, AsymmetricDoorCentreIsBetweenTheFrames) {
@@ -106,6 +143,15 @@ TEST(DoorwayDetector, StaleReadingsAreUnknownNotFree) {
   // fresh evidence of ¬L ∧ ¬R the robot never leaves the access point.
   const auto events = drive(*detector, room_door_room, room_door_room, 10.0, true, 5.1);
   EXPECT_TRUE(events.empty());
+  // ... and it did enter it: once fresh readings come back (x >= 8 m, the second room), the
+  // access point is left and the one event fires there, not while the readings were stale.
+  detector->reset();
+  std::vector<double> at_x;
+  const auto resumed =
+      drive(*detector, room_door_room, room_door_room, 10.0, true, 5.1, 8.0, &at_x);
+  ASSERT_EQ(resumed.size(), 1u);
+  EXPECT_GE(at_x[0], 8.0);
+  EXPECT_NEAR(resumed[0].exit_center.x(), 5.0, 0.35);
 }
 
 TEST(DoorwayDetector, ResetForgetsTheAccessPoint) {

@@ -76,6 +76,12 @@ class DoorwayDetector final : public AsrBoundaryDetector {
     streak_ = 0;
     // A corridor start, or a gap inside a room the robot has barely entered, is no new room.
     if (travel_m_ < options_.min_room_travel_m) return std::nullopt;
+    // Only a robot that went through is in the next room: it must be past the gap centre along
+    // the direction it was heading at the narrowest point.
+    const Point2 crossing(std::cos(gap_heading_rad_), std::sin(gap_heading_rad_));
+    if ((pose.translation() - gap_center_).dot(crossing) < options_.min_exit_advance_m) {
+      return std::nullopt;
+    }
     travel_m_ = 0.0;
     return BoundaryEvent{frame.time_s, gap_center_, best_width_m_, gap_heading_rad_};
   }

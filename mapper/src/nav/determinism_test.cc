@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
@@ -47,13 +48,29 @@ TEST(Determinism, SameInputsGiveSameCommands) {
   auto r2 = make_route_follower(RouteOptions{}, {Point2(3.0, 0.5), Point2(0.0, 2.0)});
   const auto a = run(*r1);
   expect_identical(a, run(*r2));
-  bool moved = false;
-  for (const auto& cmd : a) moved = moved || cmd.v_mps != 0.0;
+  bool moved = false, turned = false;
+  for (const auto& cmd : a) {
+    moved = moved || cmd.v_mps > 0.05;
+    turned = turned || std::abs(cmd.w_radps) > 0.05;
+  }
   EXPECT_TRUE(moved);
+  EXPECT_TRUE(turned);  // the second waypoint is behind and to the left
 
   auto e1 = make_explorer(ExploreOptions{});
   auto e2 = make_explorer(ExploreOptions{});
-  expect_identical(run(*e1), run(*e2));
+  const auto e = run(*e1);
+  expect_identical(e, run(*e2));
+  // A controller that outputs zero (or any constant) is trivially deterministic: the explorer
+  // must drive forward and turn, and change its command over the run.
+  bool forward = false, explorer_turned = false, changed = false;
+  for (const auto& cmd : e) {
+    forward = forward || cmd.v_mps > 0.05;
+    explorer_turned = explorer_turned || std::abs(cmd.w_radps) > 0.05;
+    changed = changed || cmd.v_mps != e.front().v_mps || cmd.w_radps != e.front().w_radps;
+  }
+  EXPECT_TRUE(forward);
+  EXPECT_TRUE(explorer_turned);
+  EXPECT_TRUE(changed);
 }
 
 }  // namespace

@@ -18,6 +18,30 @@ const NavTrace& Controller::trace() const {
   return kEmpty;
 }
 
+const char* to_string(NavMode mode) {
+  switch (mode) {
+    case NavMode::kIdle:
+      return "idle";
+    case NavMode::kDrive:
+      return "drive";
+    case NavMode::kBlocked:
+      return "blocked";
+    case NavMode::kBackOff:
+      return "back_off";
+    case NavMode::kTurn:
+      return "turn";
+    case NavMode::kDone:
+      return "done";
+    case NavMode::kDoorAlign:
+      return "door_align";
+    case NavMode::kDoorCross:
+      return "door_cross";
+    case NavMode::kExploreDone:
+      return "explore_done";
+  }
+  return "?";
+}
+
 std::unique_ptr<Controller> make_idle_controller() { return std::make_unique<IdleController>(); }
 
 }  // namespace cogmap::mapper::nav

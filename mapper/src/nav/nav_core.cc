@@ -75,7 +75,10 @@ std::optional<VelocityCommand> NavCore::recover(const NavInput& input, double pr
 
 VelocityCommand NavCore::drive_toward(const NavInput& input, double target_rad) {
   trace_.target_rad = wrap_angle_rad(target_rad);
-  const VfhChoice choice = vfh_.select(target_rad, input.pose.theta_rad);
+  const std::optional<double> previous = trace_.mode == NavMode::kDrive && trace_.has_direction
+                                             ? std::optional<double>(trace_.direction_rad)
+                                             : std::nullopt;
+  const VfhChoice choice = vfh_.select(target_rad, input.pose.theta_rad, previous);
   trace_.has_direction = choice.found;
   if (!choice.found) {
     // Boxed in: turn on the spot toward the least dense sector, hoping one opens.
@@ -89,6 +92,23 @@ VelocityCommand NavCore::drive_toward(const NavInput& input, double target_rad) 
   trace_.mode = NavMode::kDrive;
   return sent(steer(choice.direction_rad - input.pose.theta_rad, trace_.front_clearance_m,
                     speed_mps_, max_turn_radps_, options_.safety));
+}
+
+VelocityCommand NavCore::drive_direct(const NavInput& input, double target_rad, double speed_mps,
+                                      NavMode mode) {
+  trace_.target_rad = wrap_angle_rad(target_rad);
+  trace_.direction_rad = trace_.target_rad;
+  trace_.has_direction = true;
+  trace_.mode = mode;
+  // The lane the body sweeps, with the VFH margin beyond its half-width: in a doorway the
+  // jambs sit inside the ±30° cone but beside the lane.
+  const double half_lane =
+      0.5 * robot_.width_m + (options_.vfh.safety_radius_m - 0.5 * robot_.width_m) * 0.5;
+  const double lane =
+      lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane, robot_.length_m);
+  return sent(steer(target_rad - input.pose.theta_rad,
+                    mode == NavMode::kDoorCross ? lane : trace_.front_clearance_m,
+                    std::min(speed_mps, speed_mps_), max_turn_radps_, options_.safety));
 }
 
 VelocityCommand NavCore::sent(const VelocityCommand& cmd) {

@@ -44,6 +44,11 @@ class NavCore {
   /// Drives toward the world direction `target_rad` through VFH and the front safety check.
   VelocityCommand drive_toward(const NavInput& input, double target_rad);
 
+  /// Steers straight at the world direction `target_rad` at up to `speed_mps`, without VFH
+  /// (the door behaviour's crossing), keeping the front safety check.
+  VelocityCommand drive_direct(const NavInput& input, double target_rad, double speed_mps,
+                               NavMode mode);
+
   /// Records the command about to be sent (stuck detection needs it) and returns it.
   VelocityCommand sent(const VelocityCommand& cmd);
 

@@ -1,10 +1,14 @@
-// The route follower: waypoints in the world frame, steered through VFH (thesis §2.2.3).
+// The route follower: waypoints in the world frame, steered through VFH (thesis §2.2.3), with
+// the door behaviour where the line to the waypoint is blocked, and a bounded give-up.
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "nav/door_passage.h"
 #include "nav/nav_core.h"
 
 namespace cogmap::mapper::nav {
@@ -18,30 +22,41 @@ CoreOptions core_options(const RouteOptions& o) {
 class RouteFollower final : public Controller {
  public:
   RouteFollower(const RouteOptions& options, std::vector<Point2> waypoints)
-      : options_(options), waypoints_(std::move(waypoints)), core_(core_options(options)) {}
+      : options_(options),
+        waypoints_(std::move(waypoints)),
+        core_(core_options(options)),
+        door_(options.door) {}
 
   VelocityCommand step(const NavInput& input) override {
     if (input.frame == nullptr) return core_.stop(NavMode::kIdle);
-    advance(input.pose.translation());
+    const double now = input.frame->time_s;
+    const Point2 here = input.pose.translation();
+    advance(here, now);
     if (done()) return core_.stop(NavMode::kDone);
     // What lies beyond the waypoint (plus the robot's clearance) need not block the way there:
     // a waypoint near a wall must stay reachable.
-    const double goal_range_m =
-        (waypoints_[index_] - input.pose.translation()).norm() + options_.vfh.safety_radius_m;
+    const double goal_range_m = (waypoints_[index_] - here).norm() + options_.vfh.safety_radius_m;
     core_.sense(input, goal_range_m);
-    if (core_.check_stuck(input) && ++attempts_ > options_.recovery.max_attempts) {
-      // This waypoint has defeated every recovery: give it up and try the next one.
-      ++index_;
-      attempts_ = 0;
-      leg_start_ = input.pose.translation();  // the next leg starts where it gave up
+    if (reached_behind_obstacle(here)) {
+      next_waypoint(waypoints_[index_], now);
+      if (done()) return core_.stop(NavMode::kDone);
+    }
+    const bool stuck = core_.check_stuck(input);
+    const bool stalled_too_long = now - progress_s_ > options_.give_up_s;
+    if ((stuck && ++attempts_ > options_.recovery.max_attempts) || stalled_too_long) {
+      // This waypoint has defeated every recovery, or the robot has not come any nearer for
+      // give_up_s: give it up, report it, and go on with the next one.
       ++core_.trace().skipped_waypoints;
-      advance(input.pose.translation());
+      next_waypoint(here, now);
+      advance(here, now);
       if (done()) return core_.stop(NavMode::kDone);
     }
     core_.trace().waypoint_index = index_;
-    const Point2 to_goal = waypoints_[index_] - input.pose.translation();
+    const Point2 goal = waypoints_[index_];
+    const Point2 to_goal = goal - here;
     const double target_rad = std::atan2(to_goal.y(), to_goal.x());
     if (const auto cmd = core_.recover(input, target_rad)) return *cmd;
+    if (const auto cmd = door_step(input, door_goal(here))) return *cmd;
     return core_.drive_toward(input, target_rad);
   }
 
@@ -49,12 +64,74 @@ class RouteFollower final : public Controller {
   const NavTrace& trace() const override { return core_.trace(); }
 
  private:
-  void advance(const Point2& position) {
-    if (!leg_start_) leg_start_ = position;
-    while (!done() && reached(position)) {
-      leg_start_ = waypoints_[index_];
-      ++index_;
-      attempts_ = 0;
+  /// The point the door behaviour looks toward: the waypoint, or the one after it when the
+  /// waypoint is close (a door-centre waypoint the estimate puts in a jamb).
+  Point2 door_goal(const Point2& here) const {
+    const Point2 w = waypoints_[index_];
+    if ((w - here).norm() < options_.blocked_reach_m && index_ + 1 < waypoints_.size()) {
+      return waypoints_[index_ + 1];
+    }
+    return w;
+  }
+
+  /// The door behaviour's command this cycle, if it is (or now becomes) active.
+  std::optional<VelocityCommand> door_step(const NavInput& input, const Point2& goal) {
+    if (!options_.door.enabled) return std::nullopt;
+    const Point2 here = input.pose.translation();
+    const std::vector<ObstaclePoint>& points = core_.field().points();
+    const double now = input.frame->time_s;
+    if (!door_.active()) {
+      // Only where the straight line is blocked within the door search range: open space and
+      // openings the line already threads are VFH's.
+      const bool blocked = line_blocked(points, here, goal, options_.vfh.safety_radius_m, 0.1,
+                                        options_.door.search_range_m);
+      if (!door_.offer(blocked ? door_.find(points, here, goal, now) : std::nullopt, now)) {
+        return std::nullopt;
+      }
+    }
+    const auto aim = door_.step(points, input.pose, goal, now);
+    core_.trace().door_passages = door_.crossed();
+    if (!aim) return std::nullopt;
+    const Point2 d = *aim - here;
+    const double rad = std::atan2(d.y(), d.x());
+    if (door_.mode() == NavMode::kDoorCross) {
+      return core_.drive_direct(input, rad, options_.door.speed_mps, NavMode::kDoorCross);
+    }
+    // The approach point lies in the open space in front of the opening: steer straight at
+    // it (VFH's valley choice swings the heading about near a wall and loses the door).
+    return core_.drive_direct(input, rad, options_.speed_mps, NavMode::kDoorAlign);
+  }
+
+  /// A waypoint a drifted estimate puts inside or behind an obstacle is as reached as it can
+  /// be once the robot is within blocked_reach_m and the sensed obstacle is in between.
+  bool reached_behind_obstacle(const Point2& here) const {
+    const Point2 w = waypoints_[index_];
+    const double d = (w - here).norm();
+    if (d > options_.blocked_reach_m) return false;
+    return line_blocked(core_.field().points(), here, w, 0.5 * options_.vfh.safety_radius_m, 0.0,
+                        d + 0.1);
+  }
+
+  void next_waypoint(const Point2& leg_start, double now) {
+    leg_start_ = leg_start;
+    ++index_;
+    attempts_ = 0;
+    best_m_ = std::numeric_limits<double>::infinity();
+    progress_s_ = now;
+  }
+
+  void advance(const Point2& position, double now) {
+    if (!leg_start_) {
+      leg_start_ = position;
+      progress_s_ = now;
+    }
+    while (!done() && reached(position)) next_waypoint(waypoints_[index_], now);
+    if (!done()) {
+      const double d = (waypoints_[index_] - position).norm();
+      if (d < best_m_ - options_.progress_m) {
+        best_m_ = d;
+        progress_s_ = now;
+      }
     }
     core_.trace().waypoint_index = index_;
   }
@@ -78,7 +155,10 @@ class RouteFollower final : public Controller {
   std::size_t index_ = 0;
   int attempts_ = 0;                 // recoveries spent on the current waypoint
   std::optional<Point2> leg_start_;  // where the current leg began (previous waypoint or start)
+  double best_m_ = std::numeric_limits<double>::infinity();  // nearest to the waypoint so far
+  double progress_s_ = 0.0;  // when the robot last came progress_m nearer to it
   NavCore core_;
+  DoorPassage door_;
 };
 
 }  // namespace

@@ -23,6 +23,19 @@ double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_r
   return nearest;
 }
 
+double lane_clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
+                        double half_width_m, double length_m) {
+  const double c = std::cos(heading_rad), s = std::sin(heading_rad);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const ObstaclePoint& o : obstacles) {
+    const double ahead = c * o.offset_m.x() + s * o.offset_m.y();
+    const double lateral = -s * o.offset_m.x() + c * o.offset_m.y();
+    if (ahead <= 0.0 || std::abs(lateral) > half_width_m) continue;
+    nearest = std::min(nearest, ahead - 0.5 * length_m);
+  }
+  return nearest;
+}
+
 VelocityCommand steer(double heading_error_rad, double front_clearance_m, double speed_mps,
                       double max_turn_radps, const SafetyOptions& options) {
   const double turn_in_place = deg_to_rad(options.turn_in_place_deg);

@@ -15,6 +15,13 @@ namespace cogmap::mapper::nav {
 double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
                    double half_angle_rad, double length_m);
 
+/// Distance from the bumper to the nearest obstacle ahead inside the lane the body sweeps
+/// driving straight along `heading_rad` (|lateral| ≤ half_width_m), metres; +infinity when
+/// the lane is clear. Used in doorways, where the jambs sit inside the ±30° cone but beside
+/// the lane.
+double lane_clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
+                        double half_width_m, double length_m);
+
 /// w = k·error clipped to `max_turn_radps`; errors beyond turn_in_place_deg turn on the spot;
 /// otherwise v = speed·(1 - |error|/turn_in_place)·proximity, where proximity falls linearly
 /// from 1 at slow_clearance_m to 0 at stop_clearance_m of `front_clearance_m`. Below the stop

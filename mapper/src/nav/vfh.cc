@@ -92,7 +92,8 @@ void Vfh::build(const std::vector<ObstaclePoint>& obstacles, double range_m) {
   }
 }
 
-VfhChoice Vfh::select(double target_rad, double heading_rad) const {
+VfhChoice Vfh::select(double target_rad, double heading_rad,
+                      std::optional<double> previous_rad) const {
   const int n = sector_count();
   const int blocked_count = static_cast<int>(std::count(blocked_.begin(), blocked_.end(), 1));
   if (blocked_count == n) return {};
@@ -103,8 +104,12 @@ VfhChoice Vfh::select(double target_rad, double heading_rad) const {
   VfhChoice best;
   double best_cost = 0.0;
   const auto consider = [&](double direction, int width) {
-    const double cost = std::abs(wrap_angle_rad(direction - target_rad)) +
-                        options_.heading_weight * std::abs(wrap_angle_rad(direction - heading_rad));
+    const double cost =
+        std::abs(wrap_angle_rad(direction - target_rad)) +
+        options_.heading_weight * std::abs(wrap_angle_rad(direction - heading_rad)) +
+        (previous_rad
+             ? options_.previous_weight * std::abs(wrap_angle_rad(direction - *previous_rad))
+             : 0.0);
     if (!best.found || cost < best_cost) {
       best_cost = cost;
       best = {true, wrap_angle_rad(direction), width};

@@ -19,10 +19,34 @@ b2Vec2 to_b2(const mapper::Point2& p) {
   return {static_cast<float>(p.x()), static_cast<float>(p.y())};
 }
 
+// True when b2PolygonShape::Set accepts `pts` instead of asserting: at least 3 vertices left
+// after it welds those closer than b2_linearSlop / 2, and a hull of non-zero float area. The
+// loader's limits (1 cm features, 1 km coordinates) keep valid worlds far from this; mitred
+// joints of very short segments can still produce slivers, which are skipped, not fatal.
+bool box2d_accepts(const std::vector<b2Vec2>& pts) {
+  constexpr float kWeld = 0.5f * b2_linearSlop;
+  std::vector<b2Vec2> unique;
+  for (const b2Vec2& v : pts) {
+    bool fresh = true;
+    for (const b2Vec2& u : unique) fresh = fresh && b2DistanceSquared(v, u) >= kWeld * kWeld;
+    if (fresh) unique.push_back(v);
+  }
+  if (unique.size() < 3 || unique.size() > static_cast<std::size_t>(b2_maxPolygonVertices)) {
+    return false;
+  }
+  // Twice the area of the fan from the first vertex, in float like Box2D's centroid.
+  float twice_area = 0.0f;
+  for (std::size_t i = 1; i + 1 < unique.size(); ++i) {
+    twice_area += b2Cross(unique[i] - unique[0], unique[i + 1] - unique[0]);
+  }
+  return std::abs(0.5f * twice_area) > 100.0f * b2_epsilon;
+}
+
 int add_convex(b2Body* body, const mapper::Polyline& outline) {
   if (std::abs(geom::signed_area(outline)) < kMinFixtureAreaM2) return 0;
   std::vector<b2Vec2> pts;
   for (const mapper::Point2& p : outline) pts.push_back(to_b2(p));
+  if (!box2d_accepts(pts)) return 0;
   b2PolygonShape shape;
   shape.Set(pts.data(), static_cast<int32>(pts.size()));
   body->CreateFixture(&shape, 0.0f);

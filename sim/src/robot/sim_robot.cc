@@ -6,12 +6,20 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "cogmap/mapper/seam/robot_models.h"
 #include "cogmap/sim/seed.h"
 #include "cogmap/sim/world_geometry.h"
 
 namespace cogmap::sim {
 
 namespace {
+
+// The model's geometry (robot.model); the options parser has already refused unknown names.
+mapper::RobotGeometry geometry_of(const std::string& model) {
+  const mapper::RobotModel* m = mapper::find_robot_model(model);
+  if (!m) throw std::invalid_argument("SimRobot: unknown robot model '" + model + "'");
+  return m->geometry;
+}
 
 // Independent random streams derived from the run seed.
 constexpr std::uint64_t kSonarStream = 1;
@@ -57,7 +65,7 @@ BodyTwist measured_twist(const mapper::Pose2& before, const mapper::Pose2& after
 
 SimRobot::SimRobot(const WorldSpec& world, const SimRobotOptions& options, std::uint64_t seed)
     : options_(checked(options)),
-      geometry_(mapper::p2at_geometry()),
+      geometry_(geometry_of(options.model)),
       scene_(surface_segments(world)),
       physics_(std::make_unique<PhysicsWorld>(world, physics_for(options, geometry_))),
       limiter_(limits_for(options, geometry_)),

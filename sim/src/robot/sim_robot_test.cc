@@ -96,8 +96,8 @@ TEST(SimRobot, FramesCarryTimeSonarAndTruth) {
     }
     readings += frame->sonar.size();
   }
-  // One transducer every 40 ms: 5 s bring 125 pings.
-  EXPECT_EQ(readings, 125u);
+  // Each of the two arrays fires one transducer every 40 ms: 5 s bring 2 x 125 pings.
+  EXPECT_EQ(readings, 250u);
   EXPECT_DOUBLE_EQ(robot.sim_time_s(), 5.0);
   EXPECT_EQ(robot.geometry().sonars.size(), 16u);
 }
@@ -170,7 +170,8 @@ TEST(SimRobotOptions, ParsesTheRobotBlock) {
   EXPECT_NE(error("robot:\n  physics_substeps: 0\n").find("robot.physics_substeps"),
             std::string::npos);
   EXPECT_NE(error("robot:\n  source: p2os\n").find("source: sim"), std::string::npos);
-  EXPECT_NE(error("robot:\n  model: p3dx\n").find("robot.model"), std::string::npos);
+  EXPECT_NE(error("robot:\n  model: r2d2\n").find("robot.model: unknown robot model 'r2d2'"),
+            std::string::npos);
   EXPECT_NE(error("robot:\n  cycle_s: fast\n").find("e.yaml:2: robot.cycle_s"), std::string::npos);
 }
 

@@ -17,13 +17,6 @@ constexpr double kSightSlackM = 1e-6;
 
 double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-double heading_of(const Point2& v) { return std::atan2(v.y(), v.x()); }
-
-bool inside_cone(const Cone& cone, const Point2& dir) {
-  return std::abs(mapper::wrap_angle_rad(heading_of(dir) - cone.axis_rad)) <=
-         cone.half_beam_rad + 1e-12;
-}
-
 // True when nothing in the scene (but `skip_surface`) is hit before `dist_m - slack` on the way
 // from `from` in unit direction `dir`.
 bool clear_line(const SonarScene& scene, const Point2& from, const Point2& dir, double dist_m,
@@ -35,35 +28,44 @@ bool clear_line(const SonarScene& scene, const Point2& from, const Point2& dir, 
 
 }  // namespace
 
+namespace {
+
+// One surface's test, shared by every scan so all run the very same floating-point operations.
+// Equally distant surfaces: the higher index wins, whatever order they are tested in.
+void test_surface(const SonarScene& scene, int i, const Point2& origin, const Point2& dir,
+                  double& best_t, std::optional<RayHit>& best) {
+  const mapper::Segment& s = scene.surfaces[static_cast<std::size_t>(i)];
+  const Point2 e = s.b - s.a;
+  const double denom = cross(dir, e);
+  if (std::abs(denom) < 1e-15) return;  // parallel: a grazing ray never echoes anyway
+  const Point2 ao = s.a - origin;
+  const double t = cross(ao, e) / denom;
+  const double u = cross(ao, dir) / denom;
+  if (t <= kMinT || t > best_t || u < 0.0 || u > 1.0) return;
+  if (best && t == best_t && i < best->surface) return;
+  const double len = e.norm();
+  best_t = t;
+  best = RayHit{t, i, origin + t * dir, Point2(-e.y() / len, e.x() / len)};
+}
+
+}  // namespace
+
 std::optional<RayHit> first_hit(const SonarScene& scene, const Point2& origin, const Point2& dir,
                                 double max_t_m, int skip_surface, const SceneIndex* index) {
   std::optional<RayHit> best;
   double best_t = max_t_m;
-  // One surface's test, shared by the full scan and the indexed scan so both run the very same
-  // floating-point operations in the same order.
-  auto test = [&](int i) {
-    if (i == skip_surface) return;
-    const mapper::Segment& s = scene.surfaces[static_cast<std::size_t>(i)];
-    const Point2 e = s.b - s.a;
-    const double denom = cross(dir, e);
-    if (std::abs(denom) < 1e-15) return;  // parallel: a grazing ray never echoes anyway
-    const Point2 ao = s.a - origin;
-    const double t = cross(ao, e) / denom;
-    const double u = cross(ao, dir) / denom;
-    if (t <= kMinT || t > best_t || u < 0.0 || u > 1.0) return;
-    const double len = e.norm();
-    best_t = t;
-    best = RayHit{t, i, origin + t * dir, Point2(-e.y() / len, e.x() / len)};
-  };
   if (index == nullptr) {
-    for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) test(i);
+    for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
+      if (i != skip_surface) test_surface(scene, i, origin, dir, best_t, best);
+    }
     return best;
   }
-  // Candidates come ascending, so ties (equal t: the later surface wins) resolve as in the full
-  // scan. thread_local keeps the buffer's allocation across the ~30 rays of every ping.
+  // thread_local keeps the buffer's allocation across the rays of every ping.
   thread_local std::vector<int> candidates;
   index->surfaces_near_ray(origin, dir, max_t_m, candidates);
-  for (const int i : candidates) test(i);
+  for (const int i : candidates) {
+    if (i != skip_surface) test_surface(scene, i, origin, dir, best_t, best);
+  }
   return best;
 }
 
@@ -75,100 +77,158 @@ Point2 reflect(const Point2& dir, const Point2& normal) {
   return dir - 2.0 * dir.dot(normal) * normal;
 }
 
-SonarEcho first_echo(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options,
-                     const SceneIndex* index) {
-  const double critical_rad = options.critical_angle_deg * std::numbers::pi / 180.0;
-  double best = std::numeric_limits<double>::infinity();
-  bool best_multipath = false;
-  auto offer = [&](double range_m, bool multipath) {
-    if (range_m <= cone.max_range_m && range_m < best) {
-      best = range_m;
-      best_multipath = multipath;
-    }
-  };
+namespace {
 
-  // The wavefront first reaches a flat surface at the foot of the perpendicular; if that foot lies
-  // on the segment, inside the cone and in sight, it is the nearest echo from that surface.
-  for (const mapper::Segment& s : scene.surfaces) {
-    const Point2 e = s.b - s.a;
-    const double len2 = e.squaredNorm();
-    if (len2 <= 0.0) continue;
-    const double u = (cone.origin - s.a).dot(e) / len2;
-    if (u < 0.0 || u > 1.0) continue;
-    const Point2 foot = s.a + u * e;
-    const double dist = (foot - cone.origin).norm();
-    if (dist <= kMinT || dist >= best || dist > cone.max_range_m) continue;
-    const Point2 dir = (foot - cone.origin) / dist;
-    if (!inside_cone(cone, dir)) continue;
-    if (clear_line(scene, cone.origin, dir, dist, kSightSlackM, -1, index)) offer(dist, false);
+// A candidate this strong is heard with probability exactly 1.0 in double precision
+// (1 - exp(-37) rounds to 1), so no later echo can ever be the first heard.
+constexpr double kCertainStrength = 37.0;
+
+// The two-way beam pattern at `offset_rad` from the axis (1 on the axis).
+double beam_pattern(double offset_rad, double sigma_rad) {
+  const double z = offset_rad / sigma_rad;
+  return std::exp(-0.5 * z * z);
+}
+
+// Expected detections of one ray's share (width dphi_rad) of a surface hit at incidence
+// `incidence_rad` after a path whose one-way length is range_m: the mirror lobe (normalised so
+// that the rays across it add up to specular_strength) plus the diffuse backscatter.
+// x^e with the exponents the defaults use done exactly and cheaply (pow is ~5 % of a ping).
+double power(double x, double e) {
+  if (e == 0.0) return 1.0;
+  if (e == 1.0) return x;
+  if (e == 0.5) return std::sqrt(x);
+  if (e == 2.0) return x * x;
+  return std::pow(x, e);
+}
+
+// `cos_incidence` = |ray · normal|.
+double surface_strength(const SonarMaterial& m, double cos_incidence, double range_m,
+                        double range_gain_exponent, double dphi_rad) {
+  const double lobe_rad = m.specular_lobe_deg * std::numbers::pi / 180.0;
+  double mirror = 0.0;
+  // Beyond 8 lobe widths exp(-32) adds nothing: skip the acos and exp.
+  if (cos_incidence > std::cos(std::min(8.0 * lobe_rad, std::numbers::pi / 2))) {
+    const double z = std::acos(std::min(1.0, cos_incidence)) / lobe_rad;
+    mirror = m.specular_strength * std::exp(-0.5 * z * z) /
+             (std::sqrt(2.0 * std::numbers::pi) * lobe_rad);
   }
+  const double diffuse = m.diffuse_strength * power(cos_incidence, m.diffuse_incidence_exponent) *
+                         power(std::max(range_m, 0.1), range_gain_exponent);
+  return (mirror + diffuse) * dphi_rad;
+}
 
-  // Convex corners and edges scatter the pulse in every direction.
+}  // namespace
+
+std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& cone,
+                                           const SonarModelOptions& options,
+                                           const SceneIndex* index) {
+  std::vector<EchoCandidate> out;
+  const double sigma_rad = options.beam_sigma_deg * std::numbers::pi / 180.0;
+  const double fan_rad = options.fan_half_width_deg * std::numbers::pi / 180.0;
+  const double gain = std::pow(10.0, options.detection_gain_db / 10.0);
+  const double g_exp = options.diffuse_range_gain_exponent;
+  const Point2 axis(std::cos(cone.axis_rad), std::sin(cone.axis_rad));
+  auto offset_of = [&](const Point2& dir) { return std::atan2(cross(axis, dir), axis.dot(dir)); };
+
+  // Direct hits of every ray first: a candidate heard for certain (probability exactly 1 in
+  // double precision) ends the listening, so nothing beyond it is traced. Bounce paths are never
+  // shorter than their first leg, so the cut is exact.
+  const int n = options.rays_per_cone;
+  const double dphi = n == 1 ? 2.0 * fan_rad : 2.0 * fan_rad / (n - 1);
+  struct Ray {
+    Point2 d;
+    double offset, beam;
+    std::optional<RayHit> hit;
+  };
+  thread_local std::vector<Ray> rays;
+  rays.clear();
+  double certain_m = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const double offset = n == 1 ? 0.0 : -fan_rad + 2.0 * fan_rad * i / (n - 1);
+    const double angle = cone.axis_rad + offset;
+    Ray ray{Point2(std::cos(angle), std::sin(angle)), offset,
+            gain * beam_pattern(offset, sigma_rad), std::nullopt};
+    ray.hit = first_hit(scene, cone.origin, ray.d, cone.max_range_m, -1, index);
+    if (ray.hit) {
+      const SonarMaterial& m1 = scene.material_of(ray.hit->surface);
+      const double strength = ray.beam * surface_strength(m1, std::abs(ray.d.dot(ray.hit->normal)),
+                                                          ray.hit->t_m, g_exp, dphi);
+      out.push_back({ray.hit->t_m, strength, false});
+      if (strength >= kCertainStrength) certain_m = std::min(certain_m, ray.hit->t_m);
+    }
+    rays.push_back(ray);
+  }
+  // Convex corners and edges diffract the pulse in every direction (none beyond a certain
+  // echo can be heard first, so their line of sight is not tested).
+  const double cos_fan = std::cos(fan_rad);
   for (const Point2& c : scene.corners) {
     const double dist = (c - cone.origin).norm();
-    if (dist <= kMinT || dist >= best || dist > cone.max_range_m) continue;
+    if (dist <= kMinT || dist > cone.max_range_m || dist > certain_m) continue;
     const Point2 dir = (c - cone.origin) / dist;
-    if (!inside_cone(cone, dir)) continue;
-    if (clear_line(scene, cone.origin, dir, dist, options.corner_radius_m, -1, index))
-      offer(dist, false);
+    if (axis.dot(dir) < cos_fan - 1e-12) continue;  // outside the fan: skip the atan2
+    const double offset = offset_of(dir);
+    if (std::abs(offset) > fan_rad) continue;
+    if (!clear_line(scene, cone.origin, dir, dist, options.corner_radius_m, -1, index)) continue;
+    const double strength = gain * options.corner_strength * beam_pattern(offset, sigma_rad);
+    out.push_back({dist, strength, false});
+    if (strength >= kCertainStrength) certain_m = std::min(certain_m, dist);
   }
 
-  const int n = options.rays_per_cone;
-  for (int i = 0; i < n; ++i) {
-    const double offset =
-        n == 1 ? 0.0 : -cone.half_beam_rad + 2.0 * cone.half_beam_rad * i / (n - 1);
-    const double angle = cone.axis_rad + offset;
-    const Point2 d(std::cos(angle), std::sin(angle));
-    const auto h1 = first_hit(scene, cone.origin, d, cone.max_range_m, -1, index);
-    if (!h1) continue;
-    if (incidence_rad(d, h1->normal) <= critical_rad) {
-      offer(h1->t_m, false);
-      continue;
-    }
-    bool near_corner = false;
-    if (index != nullptr) {
-      near_corner = index->corner_within(h1->point, options.corner_radius_m);
-    } else {
-      for (const Point2& c : scene.corners) {
-        near_corner = near_corner || (c - h1->point).norm() <= options.corner_radius_m;
-      }
-    }
-    if (near_corner) {
-      offer(h1->t_m, false);
-      continue;
-    }
-    if (!options.multipath) continue;
+  for (const Ray& ray : rays) {
+    if (!ray.hit || ray.hit->t_m >= certain_m) continue;
+    const std::optional<RayHit>& h1 = ray.hit;
+    const Point2& d = ray.d;
+    const double offset = ray.offset;
+    const double beam = ray.beam;
+    const SonarMaterial& m1 = scene.material_of(h1->surface);
+    if (!options.multipath || m1.mirror_reflectivity <= 0.0) continue;
 
-    // Specular miss: follow one bounce. The half path can be at most max range, so the second
-    // leg can be at most 2 * max range - t1 long.
+    // The mirrored part goes on. No echo later than max range, nor later than a certain one,
+    // can be heard first, and both bounce ranges are at least (t1 + t2) / 2: the second leg is
+    // cast at most 2 * latest - t1 far.
+    const double mirrored = beam * m1.mirror_reflectivity;
     const Point2 d2 = reflect(d, h1->normal);
-    const auto h2 =
-        first_hit(scene, h1->point, d2, 2.0 * cone.max_range_m - h1->t_m, h1->surface, index);
+    const double latest_m = std::min(cone.max_range_m, certain_m);
+    const auto h2 = first_hit(scene, h1->point, d2, 2.0 * latest_m - h1->t_m, h1->surface, index);
     if (!h2) continue;
-    if (incidence_rad(d2, h2->normal) <= critical_rad) {
-      // The second surface scatters back along the bounce path: range = t1 + t2.
-      offer(h1->t_m + h2->t_m, true);
-      continue;
+    const SonarMaterial& m2 = scene.material_of(h2->surface);
+    // The second surface scatters back along the bounce path: range = t1 + t2.
+    const double back_range = h1->t_m + h2->t_m;
+    if (back_range <= latest_m) {
+      out.push_back(
+          {back_range,
+           mirrored * surface_strength(m2, std::abs(d2.dot(h2->normal)), back_range, g_exp, dphi),
+           true});
     }
-    // Otherwise the second surface mirrors it again; it is heard if it heads back at the
-    // transducer (a concave corner acts as a retro-reflector) and arrives inside the cone.
+    // Or it mirrors again straight back at the transducer: a concave corner is a
+    // retro-reflector, heard at about its own distance though both walls are oblique.
     const Point2 d3 = reflect(d2, h2->normal);
     const Point2 back = cone.origin - h2->point;
     const double t3 = back.norm();
     if (t3 <= kMinT) continue;
     const Point2 back_dir = back / t3;
-    if (std::acos(std::clamp(d3.dot(back_dir), -1.0, 1.0)) > critical_rad) continue;
-    if (!inside_cone(cone, -back_dir)) continue;
+    const double retro_range = 0.5 * (h1->t_m + h2->t_m + t3);
+    if (retro_range > latest_m) continue;
+    const double arrival_offset = offset_of(-back_dir);
+    if (std::abs(arrival_offset) > fan_rad) continue;
+    const double mismatch = std::acos(std::clamp(d3.dot(back_dir), -1.0, 1.0));
+    const double lobe_rad = m2.specular_lobe_deg * std::numbers::pi / 180.0;
+    if (mismatch > 4.0 * lobe_rad) continue;  // beyond 4 sd the lobe adds nothing measurable
     if (!clear_line(scene, h2->point, back_dir, t3, kSightSlackM, h2->surface, index)) continue;
-    offer(0.5 * (h1->t_m + h2->t_m + t3), true);
+    // Leaving along the ray and arriving from arrival_offset: the geometric mean of the two
+    // one-way patterns stands in for the two-way pattern.
+    const double two_way =
+        std::sqrt(beam_pattern(offset, sigma_rad) * beam_pattern(arrival_offset, sigma_rad));
+    const double z = mismatch / lobe_rad;
+    const double strength = gain * two_way * m1.mirror_reflectivity * m2.mirror_reflectivity *
+                            m2.specular_strength * std::exp(-0.5 * z * z) /
+                            (std::sqrt(2.0 * std::numbers::pi) * lobe_rad) * dphi;
+    out.push_back({retro_range, strength, true});
   }
-
-  SonarEcho out;
-  if (std::isfinite(best)) {
-    out.echo = true;
-    out.range_m = best;
-    out.multipath = best_multipath;
-  }
+  std::erase_if(out, [&](const EchoCandidate& c) { return c.range_m > certain_m; });
+  std::stable_sort(out.begin(), out.end(), [](const EchoCandidate& a, const EchoCandidate& b) {
+    return a.range_m < b.range_m;
+  });
   return out;
 }
 

@@ -3,6 +3,7 @@
 /// specular bounces and the first-arriving echo. Noise-free and deterministic.
 
 #include <optional>
+#include <vector>
 
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/sim/sonar_model.h"
@@ -32,19 +33,20 @@ double incidence_rad(const mapper::Point2& dir, const mapper::Point2& normal);
 /// The mirror image of `dir` about a surface with unit `normal`.
 mapper::Point2 reflect(const mapper::Point2& dir, const mapper::Point2& normal);
 
-/// The cone of one transducer, world frame.
+/// The beam of one transducer, world frame.
 struct Cone {
   mapper::Point2 origin;  ///< transducer position, metres
   double axis_rad = 0.0;  ///< beam axis heading, radians
-  double half_beam_rad = 0.0;
   double max_range_m = 5.0;
 };
 
-/// The earliest echo the transducer hears: normal-incidence feet of surfaces inside the cone,
-/// corners inside the cone, rays within the critical angle, and (if enabled) one-bounce multipath.
-/// `index`, if given, must be built from a scene bit-identical to `scene`; it changes only the
-/// speed, never the echo.
-SonarEcho first_echo(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options,
-                     const SceneIndex* index = nullptr);
+/// Every way an echo can come back (docs/sonar-model.md "Echo candidates"): per ray of the fan
+/// the first surface's mirror lobe and diffuse backscatter, one-bounce multipath and the
+/// retro-reflection of concave corners; and every convex corner in sight. Sorted by range
+/// (stable). `index`, if given, must be built from a scene bit-identical to `scene`; it changes
+/// only the speed, never the candidates.
+std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& cone,
+                                           const SonarModelOptions& options,
+                                           const SceneIndex* index = nullptr);
 
 }  // namespace cogmap::sim::sonar_detail

@@ -132,15 +132,24 @@ bool SceneIndex::matches(const SonarScene& scene) const {
 void SceneIndex::surfaces_near_ray(const Point2& origin, const Point2& dir, double max_t_m,
                                    std::vector<int>& out) const {
   out.clear();
+  // Each surface once (a long wall lies in many cells), in cell order: first_hit breaks ties by
+  // surface index, so the order does not change its answer. A stamp per surface replaces the
+  // sort + unique that cost 40 % of all sonar instructions.
+  if (stamp_.size() != scene_.surfaces.size()) stamp_.assign(scene_.surfaces.size(), 0);
+  if (++query_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
   const Point2 end = origin + max_t_m * dir;
   for_cells_of_segment(origin, end, [&](int cell) {
-    out.insert(out.end(), surface_ids_.begin() + surface_start_[cell],
-               surface_ids_.begin() + surface_start_[cell + 1]);
+    for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
+      const int id = surface_ids_[k];
+      std::uint32_t& seen = stamp_[static_cast<std::size_t>(id)];
+      if (seen == query_) continue;
+      seen = query_;
+      out.push_back(id);
+    }
   });
-  // Ascending and unique: the caller then tests surfaces in the same order as a full scan, so
-  // ties between equally distant surfaces resolve the same way.
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 bool SceneIndex::corner_within(const Point2& p, double radius_m) const {

@@ -22,9 +22,9 @@ class SceneIndex {
   /// True when `scene` holds bit for bit the surfaces and corners this index was built from.
   bool matches(const SonarScene& scene) const;
 
-  /// Surface indices, ascending and unique, of every surface passing within the padding of the
-  /// segment origin + t·dir, t in [0, max_t_m] (a superset of the surfaces it can hit). `out` is
-  /// cleared first.
+  /// Surface indices of every surface passing within the padding of the segment
+  /// origin + t·dir, t in [0, max_t_m] (a superset of the surfaces it can hit), each once, in
+  /// cell order. `out` is cleared first. Not thread-safe (query scratch).
   void surfaces_near_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
                          std::vector<int>& out) const;
 
@@ -49,6 +49,10 @@ class SceneIndex {
   // surface_start_[c + 1]), ascending; likewise for corners.
   std::vector<std::uint32_t> surface_start_, corner_start_;
   std::vector<int> surface_ids_, corner_ids_;
+  // Query scratch: the query number that last took each surface (one model per thread, as the
+  // SonarModel that owns the index already requires).
+  mutable std::vector<std::uint32_t> stamp_;
+  mutable std::uint32_t query_ = 0;
 };
 
 }  // namespace cogmap::sim::sonar_detail

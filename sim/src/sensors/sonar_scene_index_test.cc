@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
@@ -20,13 +22,25 @@ namespace cogmap::sim {
 namespace {
 
 using mapper::Point2;
-using sonar_detail::first_echo;
+using sonar_detail::echo_candidates;
 using sonar_detail::first_hit;
 using sonar_detail::SceneIndex;
 
-std::filesystem::path world_path(const std::string& name) {
+std::filesystem::path worlds_dir() {
   const char* env = std::getenv("COGMAP_SOURCE_DIR");
-  return std::filesystem::path(env ? env : COGMAP_SOURCE_DIR_FALLBACK) / "worlds" / name;
+  return std::filesystem::path(env ? env : COGMAP_SOURCE_DIR_FALLBACK) / "worlds";
+}
+
+std::filesystem::path world_path(const std::string& name) { return worlds_dir() / name; }
+
+// Every world the repository ships (worlds/*.yaml), sorted so failures are reproducible.
+std::vector<std::filesystem::path> shipped_worlds() {
+  std::vector<std::filesystem::path> out;
+  for (const auto& e : std::filesystem::directory_iterator(worlds_dir())) {
+    if (e.path().extension() == ".yaml") out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -85,37 +99,96 @@ void expect_same_hits(const SonarScene& scene, std::uint64_t seed, int rays) {
 }
 
 TEST(SonarSceneIndex, RayHitsMatchFullScanInEveryShippedWorld) {
-  for (const char* name :
-       {"nine_rooms.yaml", "hallway_loop.yaml", "two_rooms.yaml", "small_clutter.yaml"}) {
-    SCOPED_TRACE(name);
-    expect_same_hits(surface_segments(load_world(world_path(name))), 11, 20000);
+  const auto worlds = shipped_worlds();
+  ASSERT_GE(worlds.size(), 5u);
+  for (const auto& path : worlds) {
+    SCOPED_TRACE(path.filename().string());
+    expect_same_hits(surface_segments(load_world(path)), 11, 20000);
   }
 }
 
-TEST(SonarSceneIndex, EchoesMatchFullScanInNineRooms) {
-  const SonarScene scene = surface_segments(load_world(world_path("nine_rooms.yaml")));
+// Random cones over the world's bounds: the candidate lists with and without the index must be
+// identical bit for bit (ranges, strengths, kinds, order).
+void expect_same_candidates(const SonarScene& scene, std::uint64_t seed, int cones,
+                            int& multipath) {
   const SceneIndex index(scene);
   ASSERT_TRUE(index.matches(scene));
-  SonarModelOptions options;
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(-0.5, 15.5), angle(-std::numbers::pi, std::numbers::pi);
-  int echoes = 0, multipath = 0;
-  for (int k = 0; k < 20000; ++k) {
-    sonar_detail::Cone cone;
-    cone.origin = Point2(u(rng), u(rng));
-    cone.axis_rad = angle(rng);
-    cone.half_beam_rad = 15.0 * std::numbers::pi / 180.0;
-    cone.max_range_m = 5.0;
-    const SonarEcho full = first_echo(scene, cone, options);
-    const SonarEcho fast = first_echo(scene, cone, options, &index);
-    ASSERT_EQ(full.echo, fast.echo) << "cone " << k;
-    ASSERT_EQ(full.multipath, fast.multipath) << "cone " << k;
-    ASSERT_TRUE(same_bits(full.range_m, fast.range_m)) << "cone " << k;
-    echoes += full.echo;
-    multipath += full.multipath;
+  double xmin = 1e9, ymin = 1e9, xmax = -1e9, ymax = -1e9;
+  for (const mapper::Segment& s : scene.surfaces) {
+    for (const Point2& p : {s.a, s.b}) {
+      xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+      ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+    }
   }
-  EXPECT_GT(echoes, 10000);
-  EXPECT_GT(multipath, 100);  // the bounce paths were compared too
+  const SonarModelOptions options;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(xmin - 0.5, xmax + 0.5), uy(ymin - 0.5, ymax + 0.5);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
+  std::size_t total = 0;
+  for (int k = 0; k < cones; ++k) {
+    sonar_detail::Cone cone;
+    cone.origin = Point2(ux(rng), uy(rng));
+    cone.axis_rad = angle(rng);
+    cone.max_range_m = 5.0;
+    const auto full = echo_candidates(scene, cone, options);
+    const auto fast = echo_candidates(scene, cone, options, &index);
+    ASSERT_EQ(full.size(), fast.size()) << "cone " << k;
+    for (std::size_t i = 0; i < full.size(); ++i) {
+      ASSERT_TRUE(same_bits(full[i].range_m, fast[i].range_m)) << "cone " << k << " #" << i;
+      ASSERT_TRUE(same_bits(full[i].strength, fast[i].strength)) << "cone " << k << " #" << i;
+      ASSERT_EQ(full[i].multipath, fast[i].multipath) << "cone " << k << " #" << i;
+      multipath += full[i].multipath;
+    }
+    total += full.size();
+  }
+  EXPECT_GT(total, static_cast<std::size_t>(cones) * 2);  // real candidates were compared
+}
+
+TEST(SonarSceneIndex, EchoCandidatesMatchFullScanInEveryShippedWorld) {
+  for (const auto& path : shipped_worlds()) {
+    SCOPED_TRACE(path.filename().string());
+    SonarScene scene = surface_segments(load_world(path));
+    int multipath = 0;
+    expect_same_candidates(scene, 5, 2000, multipath);
+    EXPECT_GT(multipath, 100);  // the bounce and retro paths were compared too
+    // The same geometry with a random mix of built-in materials (glass mirrors far more).
+    std::mt19937_64 rng(8);
+    std::uniform_int_distribution<int> pick(0,
+                                            static_cast<int>(builtin_sonar_materials().size()) - 1);
+    scene.surface_material.assign(scene.surfaces.size(), 0);
+    for (int& m : scene.surface_material) m = pick(rng);
+    expect_same_candidates(scene, 6, 1000, multipath);
+  }
+}
+
+TEST(SonarSceneIndex, ModelCandidatesMatchTheUnindexedScan) {
+  // SonarModel caches an index of the last scene: its answers equal a plain scan, also after it
+  // switched between two scenes.
+  const SonarScene a = surface_segments(load_world(world_path("nine_rooms.yaml")));
+  const SonarScene b = surface_segments(load_world(world_path("two_rooms.yaml")));
+  const auto g = mapper::p2at_geometry();
+  const SonarModelOptions options;
+  const SonarModel model(options, g, 1);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(1.0, 9.0), angle(-3.14, 3.14);
+  for (int k = 0; k < 400; ++k) {
+    const SonarScene& scene = k % 3 == 0 ? b : a;
+    const mapper::Pose2 pose{u(rng), u(rng), angle(rng)};
+    const int i = k % 16;
+    const auto& m = g.sonars[static_cast<std::size_t>(i)];
+    sonar_detail::Cone cone;
+    cone.origin = pose.transform(Point2(m.x_m, m.y_m));
+    cone.axis_rad = pose.theta_rad + m.heading_rad;
+    cone.max_range_m = g.sonar_max_range_m;
+    const auto plain = echo_candidates(scene, cone, options);
+    const auto cached = model.echo_candidates(scene, pose, i);
+    ASSERT_EQ(plain.size(), cached.size()) << k;
+    for (std::size_t j = 0; j < plain.size(); ++j) {
+      ASSERT_TRUE(same_bits(plain[j].range_m, cached[j].range_m)) << k;
+      ASSERT_TRUE(same_bits(plain[j].strength, cached[j].strength)) << k;
+      ASSERT_EQ(plain[j].multipath, cached[j].multipath) << k;
+    }
+  }
 }
 
 TEST(SonarSceneIndex, CornerQueryMatchesFullScan) {
@@ -150,7 +223,7 @@ TEST(SonarSceneIndex, MatchesOnlyTheSameBits) {
 }
 
 TEST(SonarSceneIndex, EmptySceneHasNoHits) {
-  const SonarScene scene;
+  const SonarScene scene{};
   const SceneIndex index(scene);
   EXPECT_FALSE(first_hit(scene, Point2(0, 0), Point2(1, 0), 5.0, -1, &index).has_value());
   EXPECT_FALSE(index.corner_within(Point2(0, 0), 1.0));

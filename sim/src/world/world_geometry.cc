@@ -30,6 +30,7 @@ Point2 left_normal(const Point2& d) { return {-d.y(), d.x()}; }
 struct Candidate {
   Segment segment;
   std::size_t owner;  // index of the piece it bounds: never clipped against itself
+  int material = 0;   // index into WorldSpec::materials
 };
 
 struct Box {
@@ -93,10 +94,10 @@ void add_wall(const WallPolyline& wall, std::vector<SolidPiece>& pieces,
     SolidPiece piece;
     piece.outline = {ls, le, re, rs};  // clockwise: the solid is right of each edge
     pieces.push_back(piece);
-    candidates.push_back({{ls, le}, owner});
-    candidates.push_back({{re, rs}, owner});
-    if (end_cap[k]) candidates.push_back({{le, re}, owner});
-    if (start_cap[k]) candidates.push_back({{rs, ls}, owner});
+    candidates.push_back({{ls, le}, owner, wall.material});
+    candidates.push_back({{re, rs}, owner, wall.material});
+    if (end_cap[k]) candidates.push_back({{le, re}, owner, wall.material});
+    if (start_cap[k]) candidates.push_back({{rs, ls}, owner, wall.material});
   }
 }
 
@@ -123,8 +124,9 @@ void add_obstacle(const Obstacle& obstacle, std::vector<SolidPiece>& pieces,
   }
   const std::size_t owner = pieces.size();
   for (std::size_t i = 0; i < piece.outline.size(); ++i) {
-    candidates.push_back(
-        {{piece.outline[i], piece.outline[(i + 1) % piece.outline.size()]}, owner});
+    candidates.push_back({{piece.outline[i], piece.outline[(i + 1) % piece.outline.size()]},
+                          owner,
+                          obstacle.material});
   }
   pieces.push_back(std::move(piece));
 }
@@ -142,7 +144,7 @@ bool strictly_inside(const Point2& p, const Polyline& outline) {
 
 // The parts of a candidate outside every other piece, in order along the candidate.
 void clip(const Candidate& c, const std::vector<SolidPiece>& pieces, const std::vector<Box>& boxes,
-          std::vector<Segment>& out) {
+          std::vector<Segment>& out, std::vector<int>& out_material) {
   const Box own{c.segment.a.cwiseMin(c.segment.b), c.segment.a.cwiseMax(c.segment.b)};
   std::vector<std::size_t> near;
   std::vector<double> cuts{0.0, 1.0};
@@ -165,10 +167,14 @@ void clip(const Candidate& c, const std::vector<SolidPiece>& pieces, const std::
     if (!buried && open < 0.0) open = t0;
     if (buried && open >= 0.0) {
       out.push_back({c.segment.a + open * d, c.segment.a + t0 * d});
+      out_material.push_back(c.material);
       open = -1.0;
     }
   }
-  if (open >= 0.0) out.push_back({c.segment.a + open * d, c.segment.b});
+  if (open >= 0.0) {
+    out.push_back({c.segment.a + open * d, c.segment.b});
+    out_material.push_back(c.material);
+  }
 }
 
 std::vector<Point2> convex_corners(const std::vector<Segment>& surfaces) {
@@ -206,15 +212,26 @@ WorldSurfaces world_surfaces(const WorldSpec& world) {
   boxes.reserve(pieces.size());
   for (const SolidPiece& p : pieces) boxes.push_back(bounds_of(p.outline));
   WorldSurfaces out;
-  for (const Candidate& c : candidates) clip(c, pieces, boxes, out.surfaces);
-  std::erase_if(out.surfaces, [](const Segment& s) { return s.length_m() < kMinSurfaceM; });
+  for (const Candidate& c : candidates) {
+    clip(c, pieces, boxes, out.surfaces, out.surface_material);
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.surfaces.size(); ++i) {
+    if (out.surfaces[i].length_m() < kMinSurfaceM) continue;
+    out.surfaces[kept] = out.surfaces[i];
+    out.surface_material[kept] = out.surface_material[i];
+    ++kept;
+  }
+  out.surfaces.resize(kept);
+  out.surface_material.resize(kept);
   out.corners = convex_corners(out.surfaces);
   return out;
 }
 
 SonarScene surface_segments(const WorldSpec& world) {
   WorldSurfaces s = world_surfaces(world);
-  return {std::move(s.surfaces), std::move(s.corners)};
+  return {std::move(s.surfaces), std::move(s.corners), std::move(s.surface_material),
+          world.materials};
 }
 
 std::vector<Segment> true_surfaces(const WorldSpec& world) {

@@ -19,27 +19,110 @@ namespace {
 constexpr double kSamePointM = 1e-4;
 // Polygons with less area than this are degenerate, m² (1 cm²).
 constexpr double kMinPolygonAreaM2 = 1e-4;
+// Shortest wall segment, polygon edge and box side, and thinnest wall, metres. Box2D welds
+// polygon vertices closer than 2.5 mm (b2_linearSlop / 2) and then asserts: a 1-2 mm segment
+// passed `world check` and aborted the run. 1 cm keeps a factor 4 from that limit.
+constexpr double kMinFeatureM = 0.01;
+// Largest |x| or |y| of any point, metres. Box2D computes in float: at 3e6 m one float step is
+// 0.25 m and a 12 cm wall collapses (assertion); at 1 km a step is 0.06 mm. The thesis worlds
+// span under 100 m.
+constexpr double kMaxCoordinateM = 1000.0;
+
+std::string metres(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+double coordinate(const yaml::Node& node) {
+  const double v = node.as<double>();
+  if (std::abs(v) > kMaxCoordinateM) {
+    node.fail("coordinate " + metres(v) + " m is beyond the +/-" + metres(kMaxCoordinateM) +
+              " m the simulator supports (single-precision physics)");
+  }
+  return v;
+}
 
 SourceRef source_of(const yaml::Node& node) { return {node.line(), node.key_path()}; }
 
 Point2 parse_point(const yaml::Node& node) {
   if (!node.is_sequence() || node.size() != 2) node.fail("expected a point [x, y] in metres");
-  return {node.at(0).as<double>(), node.at(1).as<double>()};
+  return {coordinate(node.at(0)), coordinate(node.at(1))};
 }
 
 double parse_thickness(const yaml::Node& node) {
   const double t = node.as<double>();
   if (t <= 0.0) node.fail("wall thickness must be positive");
+  if (t < kMinFeatureM || t > kMaxCoordinateM) {
+    node.fail("wall thickness " + metres(t) + " m is outside [" + metres(kMinFeatureM) + ", " +
+              metres(kMaxCoordinateM) + "] m");
+  }
   return t;
 }
 
-WallPolyline parse_polyline(const yaml::Node& node, double default_thickness_m) {
+// The index of the material a node names, from the world's table.
+int parse_material_name(const yaml::Node& node, const std::vector<SonarMaterial>& table) {
+  const auto name = node.as<std::string>();
+  const auto found = find_sonar_material(table, name);
+  if (!found) {
+    node.fail("unknown material '" + name + "' (known: " + sonar_material_names(table) + ")");
+  }
+  return *found;
+}
+
+// One entry of `materials:`: a new material, or an override, starting from `like:` (default the
+// world's first material) and changing any key.
+SonarMaterial parse_material(const std::string& name, const yaml::Node& node,
+                             const std::vector<SonarMaterial>& table) {
+  node.expect_keys({"like", "specular_strength", "specular_lobe_deg", "diffuse_strength",
+                    "diffuse_incidence_exponent", "mirror_reflectivity"});
+  // Start from `like:`, else from the material of that name (an override), else painted_wall.
+  SonarMaterial m = table.front();
+  if (const auto existing = find_sonar_material(table, name)) m = table[*existing];
+  if (const auto like = node.child("like")) m = table[parse_material_name(*like, table)];
+  m.name = name;
+  auto read = [&](const char* key, double& value, double lo, double hi) {
+    if (const auto c = node.child(key)) {
+      value = c->as<double>();
+      if (!(value >= lo && value <= hi)) {
+        c->fail("must be in [" + metres(lo) + ", " + metres(hi) + "]");
+      }
+    }
+  };
+  read("specular_strength", m.specular_strength, 0.0, 1e6);
+  read("specular_lobe_deg", m.specular_lobe_deg, 0.1, 90.0);
+  read("diffuse_strength", m.diffuse_strength, 0.0, 1e6);
+  read("diffuse_incidence_exponent", m.diffuse_incidence_exponent, 0.0, 100.0);
+  read("mirror_reflectivity", m.mirror_reflectivity, 0.0, 1.0);
+  return m;
+}
+
+void parse_materials(const yaml::Node& node, WorldSpec& world) {
+  if (!node.is_map()) node.fail("expected a map of material name -> {like: ..., keys ...}");
+  for (const std::string& name : node.keys()) {
+    const yaml::Node entry = node[name];
+    if (name.empty()) entry.fail("a material needs a non-empty name");
+    SonarMaterial m = parse_material(name, entry, world.materials);
+    if (const auto existing = find_sonar_material(world.materials, name)) {
+      world.materials[static_cast<std::size_t>(*existing)] = m;
+    } else {
+      world.materials.push_back(m);
+    }
+  }
+}
+
+WallPolyline parse_polyline(const yaml::Node& node, double default_thickness_m,
+                            const WorldSpec& world, int default_material) {
   WallPolyline wall;
   wall.thickness_m = default_thickness_m;
+  wall.material = default_material;
   wall.source = source_of(node);
   if (node.is_map()) {
-    node.expect_keys({"points", "thickness_m"});
+    node.expect_keys({"points", "thickness_m", "material"});
     if (const auto t = node.child("thickness_m")) wall.thickness_m = parse_thickness(*t);
+    if (const auto m = node.child("material")) {
+      wall.material = parse_material_name(*m, world.materials);
+    }
   } else if (!node.is_sequence()) {
     node.fail("expected a list of [x, y] points or {points: ..., thickness_m: ...}");
   }
@@ -50,21 +133,27 @@ WallPolyline parse_polyline(const yaml::Node& node, double default_thickness_m) 
   for (std::size_t i = 0; i < points.size(); ++i) {
     const yaml::Node p = points.at(i);
     wall.points.push_back(parse_point(p));
-    if (i > 0 && (wall.points[i] - wall.points[i - 1]).norm() < kSamePointM) {
+    if (i == 0) continue;
+    const double length_m = (wall.points[i] - wall.points[i - 1]).norm();
+    if (length_m < kSamePointM) {
       p.fail("zero-length wall segment (the point repeats the previous one)");
+    }
+    if (length_m < kMinFeatureM) {
+      p.fail("wall segment of " + metres(length_m) + " m is shorter than the " +
+             metres(kMinFeatureM) + " m minimum (the physics engine cannot represent it)");
     }
   }
   return wall;
 }
 
-void parse_walls(const yaml::Node& node, WorldSpec& world) {
+void parse_walls(const yaml::Node& node, WorldSpec& world, int default_material) {
   node.expect_keys({"thickness_m", "polylines"});
   double thickness_m = kDefaultWallThicknessM;
   if (const auto t = node.child("thickness_m")) thickness_m = parse_thickness(*t);
   const yaml::Node lines = node["polylines"];
   lines.expect_sequence();
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    world.walls.push_back(parse_polyline(lines.at(i), thickness_m));
+    world.walls.push_back(parse_polyline(lines.at(i), thickness_m, world, default_material));
   }
 }
 
@@ -75,6 +164,9 @@ BoxObstacle parse_box(const yaml::Node& node) {
   const yaml::Node size = node["size"];
   const Point2 s = parse_point(size);
   if (s.x() <= 0.0 || s.y() <= 0.0) size.fail("box size must be positive in both directions");
+  if (s.x() < kMinFeatureM || s.y() < kMinFeatureM) {
+    size.fail("box sides must be at least " + metres(kMinFeatureM) + " m");
+  }
   box.length_m = s.x();
   box.width_m = s.y();
   box.angle_rad = node.get_or<double>("angle_deg", 0.0) * std::numbers::pi / 180.0;
@@ -88,6 +180,10 @@ CircleObstacle parse_circle(const yaml::Node& node) {
   const yaml::Node r = node["radius_m"];
   circle.radius_m = r.as<double>();
   if (circle.radius_m <= 0.0) r.fail("circle radius must be positive");
+  if (circle.radius_m < kMinFeatureM || circle.radius_m > kMaxCoordinateM) {
+    r.fail("circle radius must be in [" + metres(kMinFeatureM) + ", " + metres(kMaxCoordinateM) +
+           "] m");
+  }
   return circle;
 }
 
@@ -103,9 +199,16 @@ PolygonObstacle parse_polygon(const yaml::Node& node) {
     if (!polygon.points.empty() && (q - polygon.points.back()).norm() < kSamePointM) {
       p.fail("zero-length polygon edge (the vertex repeats the previous one)");
     }
+    if (!polygon.points.empty() && (q - polygon.points.back()).norm() < kMinFeatureM) {
+      p.fail("polygon edge shorter than the " + metres(kMinFeatureM) + " m minimum");
+    }
     polygon.points.push_back(q);
   }
   if (polygon.points.size() < 3) node.fail("a polygon needs at least 3 distinct vertices");
+  if ((polygon.points.front() - polygon.points.back()).norm() < kMinFeatureM) {
+    node.fail("the closing polygon edge is shorter than the " + metres(kMinFeatureM) +
+              " m minimum");
+  }
   if (std::abs(geom::signed_area(polygon.points)) < kMinPolygonAreaM2) {
     node.fail("polygon has zero area");
   }
@@ -113,11 +216,15 @@ PolygonObstacle parse_polygon(const yaml::Node& node) {
   return polygon;
 }
 
-Obstacle parse_obstacle(const yaml::Node& node) {
-  node.expect_keys({"box", "circle", "polygon"});
-  if (node.size() != 1) node.fail("an obstacle has exactly one of box, circle, polygon");
+Obstacle parse_obstacle(const yaml::Node& node, const WorldSpec& world, int default_material) {
+  node.expect_keys({"box", "circle", "polygon", "material"});
+  const auto material = node.child("material");
+  if (node.size() != (material ? 2u : 1u)) {
+    node.fail("an obstacle has exactly one of box, circle, polygon");
+  }
   Obstacle obstacle;
   obstacle.source = source_of(node);
+  obstacle.material = material ? parse_material_name(*material, world.materials) : default_material;
   if (const auto b = node.child("box")) {
     obstacle.shape = parse_box(*b);
   } else if (const auto c = node.child("circle")) {
@@ -177,23 +284,28 @@ void check_start(const WorldSpec& world, const WorldCheckOptions& options) {
 }  // namespace
 
 WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options) {
-  root.expect_keys({"name", "description", "walls", "obstacles", "start"});
+  root.expect_keys({"name", "description", "material", "materials", "walls", "obstacles", "start"});
   WorldSpec world;
   world.file = root.file();
   world.name = root.get<std::string>("name");
   if (world.name.empty()) root["name"].fail("the world needs a non-empty name");
   world.description = root.get_or<std::string>("description", "");
-  parse_walls(root["walls"], world);
+  if (const auto materials = root.child("materials")) parse_materials(*materials, world);
+  int default_material = 0;  // painted_wall, unless the world says otherwise
+  if (const auto m = root.child("material")) {
+    default_material = parse_material_name(*m, world.materials);
+  }
+  parse_walls(root["walls"], world, default_material);
   if (const auto obstacles = root.child("obstacles")) {
     obstacles->expect_sequence();
     for (std::size_t i = 0; i < obstacles->size(); ++i) {
-      world.obstacles.push_back(parse_obstacle(obstacles->at(i)));
+      world.obstacles.push_back(parse_obstacle(obstacles->at(i), world, default_material));
     }
   }
   const yaml::Node start = root["start"];
   start.expect_keys({"x_m", "y_m", "theta_deg"});
   world.start = {
-      start.get<double>("x_m"), start.get<double>("y_m"),
+      coordinate(start["x_m"]), coordinate(start["y_m"]),
       mapper::wrap_angle_rad(start.get_or<double>("theta_deg", 0.0) * std::numbers::pi / 180.0)};
   world.start_source = source_of(start);
   check_start(world, options);

@@ -190,17 +190,160 @@ TEST(WorldLoader, LoadFileNamesThePath) {
 }
 
 TEST(WorldLoader, ObstacleOutlines) {
-  Obstacle box{BoxObstacle{{1.0, 2.0}, 2.0, 1.0, 0.0}, {}};
+  Obstacle box{BoxObstacle{{1.0, 2.0}, 2.0, 1.0, 0.0}, 0, {}};
   const mapper::Polyline o = obstacle_outline(box);
   ASSERT_EQ(o.size(), 4u);
   EXPECT_DOUBLE_EQ(o[0].x(), 2.0);
   EXPECT_DOUBLE_EQ(o[0].y(), 2.5);
   EXPECT_DOUBLE_EQ(o[2].x(), 0.0);
   EXPECT_DOUBLE_EQ(o[2].y(), 1.5);
-  Obstacle circle{CircleObstacle{{0.0, 0.0}, 1.0}, {}};
+  Obstacle circle{CircleObstacle{{0.0, 0.0}, 1.0}, 0, {}};
   const mapper::Polyline c = obstacle_outline(circle, 48);
   ASSERT_EQ(c.size(), 48u);
   for (const auto& p : c) EXPECT_NEAR(p.norm(), 1.0, 1e-12);
+}
+
+// Sonar materials (docs/sonar-model.md "Materials"): the world default, per polyline, per
+// obstacle, and the world's own `materials:` table.
+TEST(WorldLoader, MaterialsDefaultToPaintedWall) {
+  const WorldSpec w = parse(kHeader +
+                            "obstacles:\n  - {circle: {center: [5, 3], radius_m: 0.5}}\n"
+                            "start: {x_m: 1, y_m: 1}\n");
+  const auto& builtins = builtin_sonar_materials();
+  ASSERT_EQ(w.materials.size(), builtins.size());
+  for (std::size_t i = 0; i < builtins.size(); ++i)
+    EXPECT_EQ(w.materials[i].name, builtins[i].name);
+  EXPECT_EQ(w.materials[0].name, "painted_wall");
+  EXPECT_EQ(w.walls[0].material, 0);
+  EXPECT_EQ(w.obstacles[0].material, 0);
+}
+
+TEST(WorldLoader, WorldPolylineAndObstacleMaterials) {
+  const WorldSpec w = parse(
+      "name: m\n"
+      "material: wood\n"
+      "walls:\n"
+      "  polylines:\n"
+      "    - [[0, 0], [10, 0], [10, 6], [0, 6], [0, 0]]\n"
+      "    - {points: [[5, 0], [5, 3]], material: glass}\n"
+      "    - {points: [[7, 6], [7, 5]], material: painted_wall, thickness_m: 0.05}\n"
+      "obstacles:\n"
+      "  - {box: {center: [2, 4], size: [1, 1]}, material: metal}\n"
+      "  - {circle: {center: [8, 3], radius_m: 0.5}}\n"
+      "  - {material: fabric, polygon: [[7, 1], [8, 1], [7.5, 2]]}\n"
+      "start: {x_m: 1, y_m: 1}\n");
+  // Indices into the built-in table: painted_wall 0, wood 1, glass 2, metal 3, fabric 4.
+  ASSERT_EQ(w.walls.size(), 3u);
+  EXPECT_EQ(w.walls[0].material, 1);  // the world default
+  EXPECT_EQ(w.walls[1].material, 2);
+  EXPECT_EQ(w.walls[2].material, 0);
+  EXPECT_DOUBLE_EQ(w.walls[2].thickness_m, 0.05);
+  ASSERT_EQ(w.obstacles.size(), 3u);
+  EXPECT_EQ(w.obstacles[0].material, 3);
+  EXPECT_EQ(w.obstacles[1].material, 1);
+  EXPECT_EQ(w.obstacles[2].material, 4);
+  EXPECT_TRUE(std::holds_alternative<PolygonObstacle>(w.obstacles[2].shape));
+  const auto alone =
+      error_of(kHeader + "obstacles:\n  - {material: glass}\nstart: {x_m: 1, y_m: 1}\n");
+  EXPECT_NE(std::string(alone.what()).find("exactly one of box, circle, polygon"),
+            std::string::npos)
+      << alone.what();
+}
+
+TEST(WorldLoader, MaterialsTableDefinesAndOverrides) {
+  const WorldSpec w = parse(
+      "name: m\n"
+      "materials:\n"
+      "  frosted: {like: glass, diffuse_strength: 0.5, mirror_reflectivity: 0.7}\n"
+      "  drywall: {specular_lobe_deg: 9}\n"
+      "  metal: {like: metal, specular_strength: 150}\n"
+      "  frosted2: {like: frosted}\n"
+      "material: drywall\n"
+      "walls:\n"
+      "  polylines:\n"
+      "    - {points: [[0, 0], [10, 0], [10, 6], [0, 6], [0, 0]], material: frosted}\n"
+      "    - [[5, 0], [5, 3]]\n"
+      "obstacles:\n"
+      "  - {box: {center: [2, 4], size: [1, 1]}, material: metal}\n"
+      "start: {x_m: 1, y_m: 1}\n");
+  const auto& b = builtin_sonar_materials();
+  ASSERT_EQ(w.materials.size(), 8u);  // five built-ins (metal replaced in place), three new
+  const SonarMaterial& frosted = w.materials[5];
+  EXPECT_EQ(frosted.name, "frosted");
+  EXPECT_EQ(frosted.specular_strength, b[2].specular_strength);  // like: glass
+  EXPECT_EQ(frosted.specular_lobe_deg, b[2].specular_lobe_deg);
+  EXPECT_EQ(frosted.diffuse_incidence_exponent, b[2].diffuse_incidence_exponent);
+  EXPECT_EQ(frosted.diffuse_strength, 0.5);
+  EXPECT_EQ(frosted.mirror_reflectivity, 0.7);
+  const SonarMaterial& drywall = w.materials[6];  // no like: starts from painted_wall
+  EXPECT_EQ(drywall.name, "drywall");
+  EXPECT_EQ(drywall.specular_lobe_deg, 9.0);
+  EXPECT_EQ(drywall.specular_strength, b[0].specular_strength);
+  EXPECT_EQ(drywall.diffuse_strength, b[0].diffuse_strength);
+  EXPECT_EQ(drywall.mirror_reflectivity, b[0].mirror_reflectivity);
+  EXPECT_EQ(w.materials[3].name, "metal");
+  EXPECT_EQ(w.materials[3].specular_strength, 150.0);
+  EXPECT_EQ(w.materials[3].specular_lobe_deg, b[3].specular_lobe_deg);
+  const SonarMaterial& frosted2 = w.materials[7];  // like: an earlier entry of the table
+  EXPECT_EQ(frosted2.name, "frosted2");
+  EXPECT_EQ(frosted2.diffuse_strength, 0.5);
+  EXPECT_EQ(frosted2.mirror_reflectivity, 0.7);
+  EXPECT_EQ(w.walls[0].material, 5);
+  EXPECT_EQ(w.walls[1].material, 6);  // the world default names a material of its own
+  EXPECT_EQ(w.obstacles[0].material, 3);
+}
+
+TEST(WorldLoader, BadMaterialsNameFileLineKeyAndTheKnownNames) {
+  const std::string known = "(known: painted_wall, wood, glass, metal, fabric)";
+  const std::string start = "start: {x_m: 5, y_m: 3}\n";
+  const auto wall = error_of(
+      "name: t\nwalls:\n  polylines:\n    - {points: [[0, 0], [10, 0]], material: glas}\n" + start);
+  EXPECT_EQ(wall.line(), 4);
+  EXPECT_EQ(wall.key(), "walls.polylines[0].material");
+  EXPECT_NE(std::string(wall.what())
+                .find("w.yaml:4: walls.polylines[0].material: unknown material 'glas' " + known),
+            std::string::npos)
+      << wall.what();
+  const auto obstacle = error_of(
+      kHeader + "obstacles:\n  - {box: {center: [5, 3], size: [1, 1]}, material: steel}\n" +
+      "start: {x_m: 1, y_m: 1}\n");
+  EXPECT_EQ(obstacle.line(), 6);
+  EXPECT_EQ(obstacle.key(), "obstacles[0].material");
+  EXPECT_NE(std::string(obstacle.what()).find("unknown material 'steel' " + known),
+            std::string::npos);
+  const auto world = error_of("name: t\nmaterial: plaster\n" + kHeader.substr(8) + start);
+  EXPECT_EQ(world.line(), 2);
+  EXPECT_EQ(world.key(), "material");
+  EXPECT_NE(std::string(world.what()).find("unknown material 'plaster' " + known),
+            std::string::npos);
+  const auto like =
+      error_of("name: t\nmaterials:\n  frosted: {like: frost}\n" + kHeader.substr(8) + start);
+  EXPECT_EQ(like.line(), 3);
+  EXPECT_EQ(like.key(), "materials.frosted.like");
+  // The list names the world's own materials too.
+  const auto own = error_of(
+      "name: t\nmaterials:\n  felt: {diffuse_strength: 1}\n"
+      "walls:\n  polylines:\n    - {points: [[0, 0], [10, 0]], "
+      "material: felted}\n" +
+      start);
+  EXPECT_EQ(own.line(), 6);
+  EXPECT_NE(std::string(own.what())
+                .find("unknown material 'felted' (known: painted_wall, wood, glass, metal, "
+                      "fabric, felt)"),
+            std::string::npos)
+      << own.what();
+  const auto key =
+      error_of("name: t\nmaterials:\n  felt: {roughness: 1}\n" + kHeader.substr(8) + start);
+  EXPECT_EQ(key.key(), "materials.felt.roughness");
+  EXPECT_NE(std::string(key.what()).find("unknown key"), std::string::npos);
+  const auto range = error_of("name: t\nmaterials:\n  felt: {mirror_reflectivity: 1.5}\n" +
+                              kHeader.substr(8) + start);
+  EXPECT_EQ(range.line(), 3);
+  EXPECT_EQ(range.key(), "materials.felt.mirror_reflectivity");
+  EXPECT_NE(std::string(range.what()).find("must be in [0, 1]"), std::string::npos);
+  const auto list = error_of("name: t\nmaterials: [glass]\n" + kHeader.substr(8) + start);
+  EXPECT_EQ(list.key(), "materials");
+  EXPECT_NE(std::string(list.what()).find("expected a map"), std::string::npos);
 }
 
 }  // namespace

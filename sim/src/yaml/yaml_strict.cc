@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <system_error>
+
+#include <yaml-cpp/eventhandler.h>
 
 namespace cogmap::yaml {
 namespace {
@@ -23,6 +27,103 @@ std::string join_key(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }
 
+// The message without its "file:line: key: " prefix.
+std::string bare(const ConfigError& e) {
+  const std::string what = e.what();
+  const std::string prefix = describe(e.file(), e.line(), e.key(), "");
+  return what.starts_with(prefix) ? what.substr(prefix.size()) : what;
+}
+
+int line_of(const YAML::Node& node) {
+  const YAML::Mark mark = node.Mark();
+  return mark.is_null() ? 0 : mark.line + 1;
+}
+
+// Walks the whole tree once after parsing: yaml-cpp accepts keys that are lists or mappings
+// (which later crash any `as<std::string>()` on a key) and keeps only the first of two equal
+// keys, silently. Both are refused here, with their lines, and the tree's size is bounded.
+class TreeCheck {
+ public:
+  TreeCheck(const std::string& file, const LoadLimits& limits) : file_(file), limits_(limits) {}
+
+  void visit(const YAML::Node& node, const std::string& path, std::size_t depth) {
+    if (++nodes_ > limits_.max_nodes) {
+      throw ConfigError(file_, line_of(node), path,
+                        "the document has more than " + std::to_string(limits_.max_nodes) +
+                            " nodes (aliases count at every use); refusing to read it");
+    }
+    if (depth > limits_.max_depth) {
+      throw ConfigError(file_, line_of(node), path,
+                        "nested more than " + std::to_string(limits_.max_depth) + " levels deep");
+    }
+    if (node.IsMap()) {
+      std::set<std::string> seen;
+      for (const auto& kv : node) {
+        if (!kv.first.IsScalar()) {
+          throw ConfigError(file_, line_of(kv.first), path,
+                            "a key must be a plain name, not a list, a mapping or empty");
+        }
+        const std::string key = kv.first.Scalar();
+        if (!seen.insert(key).second) {
+          throw ConfigError(file_, line_of(kv.first), join_key(path, key),
+                            "duplicate key (each key may appear once in a mapping)");
+        }
+        visit(kv.second, join_key(path, key), depth + 1);
+      }
+    } else if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i) {
+        visit(node[i], path + "[" + std::to_string(i) + "]", depth + 1);
+      }
+    }
+  }
+
+ private:
+  const std::string& file_;
+  const LoadLimits& limits_;
+  std::size_t nodes_ = 0;
+};
+
+// Records where the first event of a document is (its line, for messages) and nothing else.
+class FirstMark final : public YAML::EventHandler {
+ public:
+  int line = 0;
+  void OnDocumentStart(const YAML::Mark& m) override { note(m); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& m, YAML::anchor_t) override { note(m); }
+  void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { note(m); }
+  void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    note(m);
+  }
+  void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    note(m);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    note(m);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void note(const YAML::Mark& m) {
+    if (line == 0 && !m.is_null()) line = m.line + 1;
+  }
+};
+
+// The line where a second document (or text the first one could not hold, such as a stray
+// "]") starts; 0 when there is none. Asks the parser for at most two documents: YAML::LoadAll
+// loops for ever on some such texts (yaml-cpp 0.7, found by scripts/fuzz).
+int second_document_line(const std::string& text) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  FirstMark first, second;
+  if (!parser.HandleNextDocument(first)) return 0;
+  if (!parser.HandleNextDocument(second)) return 0;
+  return std::max(second.line, 1);
+}
+
 }  // namespace
 
 ConfigError::ConfigError(std::string file, int line, std::string key, const std::string& message)
@@ -34,22 +135,58 @@ ConfigError::ConfigError(std::string file, int line, std::string key, const std:
 Node::Node(YAML::Node node, std::string file, std::string key_path)
     : node_(std::move(node)), file_(std::move(file)), key_path_(std::move(key_path)) {}
 
-Node Node::load_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path.string(), 0, "", "cannot open file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return load_string(text.str(), path.string());
+Node Node::load_file(const std::filesystem::path& path, const LoadLimits& limits) {
+  const std::string name = path.string();
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw ConfigError(name, 0, "", "cannot open file");
+  if (std::filesystem::is_directory(status)) {
+    throw ConfigError(name, 0, "", "is a directory, not a YAML file");
+  }
+  // Devices (/dev/zero), pipes and sockets never end or never rewind: only regular files.
+  if (!std::filesystem::is_regular_file(status)) {
+    throw ConfigError(name, 0, "", "not a regular file (a device, pipe or socket)");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(name, 0, "", "cannot open file");
+  // Read at most one byte past the limit: the file may grow between stat and read.
+  std::string text(limits.max_file_bytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw ConfigError(name, 0, "", "read error");
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > limits.max_file_bytes) {
+    throw ConfigError(name, 0, "",
+                      "larger than the " + std::to_string(limits.max_file_bytes) +
+                          "-byte limit for configuration files; is this the right file?");
+  }
+  return load_string(text, name, limits);
 }
 
-Node Node::load_string(const std::string& text, const std::string& file) {
+Node Node::load_string(const std::string& text, const std::string& file, const LoadLimits& limits) {
+  if (text.size() > limits.max_file_bytes) {
+    throw ConfigError(file, 0, "",
+                      "larger than the " + std::to_string(limits.max_file_bytes) +
+                          "-byte limit for configuration files");
+  }
+  if (text.find('\0') != std::string::npos) {
+    const auto at = text.find('\0');
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+    throw ConfigError(file, line, "", "a NUL byte: this is not a YAML text file");
+  }
+  YAML::Node root;
   try {
-    YAML::Node root = YAML::Load(text);
-    if (!root.IsDefined() || root.IsNull()) throw ConfigError(file, 1, "", "the document is empty");
-    return Node(root, file, "");
+    if (const int line = second_document_line(text); line > 0) {
+      throw ConfigError(file, line, "",
+                        "a second YAML document (or text after the end of the first): a "
+                        "configuration file holds exactly one");
+    }
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw ConfigError(file, e.mark.is_null() ? 0 : e.mark.line + 1, "", "YAML syntax: " + e.msg);
   }
+  if (!root.IsDefined() || root.IsNull()) throw ConfigError(file, 1, "", "the document is empty");
+  TreeCheck(file, limits).visit(root, "", 0);
+  return Node(root, file, "");
 }
 
 int Node::line() const {
@@ -74,7 +211,8 @@ void Node::expect_sequence() const {
 void Node::expect_keys(std::initializer_list<std::string_view> allowed) const {
   expect_map();
   for (const auto& kv : node_) {
-    const std::string key = kv.first.as<std::string>();
+    if (!kv.first.IsScalar()) fail("a key must be a plain name, not a list or mapping");
+    const std::string key = kv.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       std::string list;
       for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
@@ -108,7 +246,10 @@ Node Node::at(std::size_t i) const {
 std::vector<std::string> Node::keys() const {
   expect_map();
   std::vector<std::string> out;
-  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  for (const auto& kv : node_) {
+    if (!kv.first.IsScalar()) fail("a key must be a plain name, not a list or mapping");
+    out.push_back(kv.first.Scalar());
+  }
   return out;
 }
 
@@ -174,6 +315,11 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
     value = YAML::Load(value_text.empty() ? "''" : value_text);
   } catch (const YAML::Exception& e) {
     throw ConfigError("--set", 0, key, "value is not valid YAML: " + e.msg);
+  }
+  try {
+    TreeCheck("--set", LoadLimits{}).visit(value, key, 0);
+  } catch (const ConfigError& e) {
+    throw ConfigError("--set", 0, key, "value is not valid: " + bare(e));
   }
   // yaml-cpp nodes are handles: walk with reset() so assignment never aliases a parent.
   YAML::Node cursor;

@@ -44,5 +44,91 @@ TEST(YamlStrict, OverrideKeepsTypesAndCreatesMappings) {
   EXPECT_THROW(apply_override(root.raw(), "mapper.cell_scale_mm.x=1"), ConfigError);
 }
 
+TEST(YamlStrict, KeyThatIsAListOrMappingIsRefusedWithItsLine) {
+  for (const char* text : {"a: 1\n? [x, y]\n: 2\n", "a: 1\n? {x: 1}\n: 2\n"}) {
+    const std::string msg = config_error_of([&] { Node::load_string(text, "k.yaml"); });
+    EXPECT_EQ(msg.rfind("k.yaml:2: a key must be a plain name", 0), 0u) << text << " -> " << msg;
+  }
+  // An empty key has no text of its own: yaml-cpp marks it where its value starts.
+  const std::string empty = config_error_of([] { Node::load_string("a: 1\n? \n: 2\n", "k.yaml"); });
+  EXPECT_EQ(empty.rfind("k.yaml:3: a key must be a plain name", 0), 0u) << empty;
+  // Nested: the key path of the mapping that holds it.
+  const std::string nested =
+      config_error_of([] { Node::load_string("mapper:\n  ? [grid]\n  : bayes\n", "n.yaml"); });
+  EXPECT_EQ(nested.rfind("n.yaml:2: mapper: a key must be a plain name", 0), 0u) << nested;
+}
+
+TEST(YamlStrict, DuplicateKeyIsRefusedAtTheSecond) {
+  const std::string msg = config_error_of(
+      [] { Node::load_string("a: 1\nrobot:\n  cycle_s: 0.1\n  cycle_s: 0.2\n", "d.yaml"); });
+  EXPECT_EQ(msg, "d.yaml:4: robot.cycle_s: duplicate key (each key may appear once in a mapping)");
+  // The same key in two different mappings is fine.
+  EXPECT_NO_THROW(Node::load_string("a: {x: 1}\nb: {x: 2}\n", "ok.yaml"));
+}
+
+TEST(YamlStrict, SecondDocumentIsRefused) {
+  const std::string msg =
+      config_error_of([] { Node::load_string("# c\na: 1\n---\nb: 2\n", "two.yaml"); });
+  EXPECT_EQ(msg,
+            "two.yaml:3: a second YAML document (or text after the end of the first): a "
+            "configuration file holds exactly one");
+  // Found by scripts/fuzz: YAML::LoadAll never returns on "[1]," (yaml-cpp 0.7), and
+  // YAML::Load silently drops the ",". Both must be an error, at once.
+  const std::string stray = config_error_of([] { Node::load_string("[1],\n", "s.yaml"); });
+  EXPECT_EQ(stray.rfind("s.yaml:1: a second YAML document (or text after the end", 0), 0u) << stray;
+  // A leading "---" alone starts the one document.
+  EXPECT_NO_THROW(Node::load_string("---\na: 1\n", "one.yaml"));
+}
+
+TEST(YamlStrict, SizeNodeCountAndNestingAreBounded) {
+  LoadLimits small;
+  small.max_file_bytes = 100;
+  EXPECT_NE(config_error_of([&] {
+              Node::load_string(std::string(101, '#'), "big.yaml", small);
+            }).find("big.yaml: larger than the 100-byte limit"),
+            std::string::npos);
+  EXPECT_NO_THROW(Node::load_string("a: 1\n" + std::string(90, '#'), "ok.yaml", small));
+  // Aliases count at every use: 10 x 10 x 10 x 10 = 10^4 leaves from a 200-byte text.
+  const std::string laughs =
+      "a: &a [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]\nb: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
+      "c: &c [*b, *b, *b, *b, *b, *b, *b, *b, *b, *b]\nd: [*c, *c, *c, *c, *c, *c, *c, *c, *c, "
+      "*c]\n";
+  LoadLimits nodes;
+  nodes.max_nodes = 5000;
+  EXPECT_NE(config_error_of([&] {
+              Node::load_string(laughs, "l.yaml", nodes);
+            }).find("more than 5000 nodes"),
+            std::string::npos);
+  EXPECT_NO_THROW(Node::load_string(laughs, "l.yaml"));  // 11 221 nodes < 200 000
+  LoadLimits shallow;
+  shallow.max_depth = 3;
+  EXPECT_NE(config_error_of([&] {
+              Node::load_string("a: [[[[1]]]]\n", "deep.yaml", shallow);
+            }).find("nested more than 3 levels"),
+            std::string::npos);
+}
+
+TEST(YamlStrict, OnlyRegularFilesAreRead) {
+  EXPECT_EQ(config_error_of([] { Node::load_file("/dev/zero"); }),
+            "/dev/zero: not a regular file (a device, pipe or socket)");
+  EXPECT_EQ(config_error_of([] { Node::load_file("/"); }), "/: is a directory, not a YAML file");
+  EXPECT_EQ(config_error_of([] { Node::load_file("/nonexistent/x.yaml"); }),
+            "/nonexistent/x.yaml: cannot open file");
+}
+
+TEST(YamlStrict, NulByteIsRefusedWithItsLine) {
+  const std::string msg =
+      config_error_of([] { Node::load_string(std::string("a: 1\nb: x\0y\n", 12), "z.yaml"); });
+  EXPECT_EQ(msg, "z.yaml:2: a NUL byte: this is not a YAML text file");
+}
+
+TEST(YamlStrict, OverrideValueWithAListKeyIsRefused) {
+  Node root = Node::load_string("mapper: {}\n", "e.yaml");
+  const std::string msg = config_error_of([&] { apply_override(root.raw(), "mapper={? [a]: 1}"); });
+  EXPECT_NE(msg.find("--set: mapper: value is not valid: a key must be a plain name"),
+            std::string::npos)
+      << msg;
+}
+
 }  // namespace
 }  // namespace cogmap::yaml

@@ -42,11 +42,20 @@ struct ControllerConfig {
   bool steer_by_truth = false;
 };
 
+/// Bounds on what an experiment may ask for (docs/reliability.md "Limits"): beyond them a
+/// run would not end in useful time or would fill the disk, so they are input errors.
+struct ExperimentLimits {
+  /// Longest `duration_s`, seconds: 4 h, past a P2-AT battery (2-3 h, P2AT.md) and 16x the
+  /// longest shipped experiment (900 s). An explorer asked for 1e12 s ran forever.
+  double max_duration_s = 14400.0;
+};
+
 /// A fully parsed experiment, overrides applied.
 struct Experiment {
   std::filesystem::path file;   ///< the experiment file as given
   std::string name;             ///< `name`
   std::filesystem::path world;  ///< `world`, resolved against the experiment file's folder
+  int world_line = 0;           ///< line of the `world` key (errors about the world file)
   std::uint64_t seed = 1;       ///< `seed` (or --seed)
   double duration_s = 600.0;    ///< `duration_s`: upper bound of simulated (or real) time
   /// `start` {x_m, y_m, theta_deg}: replaces the world's start pose (e.g. to map only some

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cogmap/experiments/metrics.h"
+#include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/mapper/grid/grid_updater.h"
 
 namespace cogmap::experiments {
@@ -36,6 +37,7 @@ struct RunMetrics {
   std::size_t asr_count = 0;
   std::size_t frames = 0;
   std::optional<bool> route_completed;      ///< route controllers only
+  NavMetrics nav;                           ///< how the robot drove itself (the nav block)
   std::optional<MapAccuracy> map;           ///< after localisation; needs ground truth
   std::optional<MapAccuracy> map_odometry;  ///< before localisation; needs ground truth
   MemoryMetrics memory;

@@ -56,7 +56,8 @@ RunSummary run_experiment(const Experiment& experiment, const RunOptions& option
 /// The loop for any Robot: each frame -> mapper -> controller -> robot.command, until
 /// duration_s, the end of the robot's frames, or a finished route; then writes every output.
 /// `truth` is null for real robots: the metrics that need it are then omitted.
-/// Throws RunError when the run fails.
+/// Throws RunDirectoryError (run_directory.h) when options.out_dir cannot take a run, and
+/// RunError when the run fails.
 RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                              const GroundTruth* truth, const RunOptions& options);
 

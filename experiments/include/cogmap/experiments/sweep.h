@@ -31,15 +31,26 @@ struct SweepRun {
   std::size_t index = 0;  ///< position in the stable expansion order
   std::vector<std::pair<std::string, std::string>> values;  ///< (key, value text), vary order
   std::uint64_t seed = 0;
-  /// Directory name under runs/: "key=value,...,seed=N" ('/' in values becomes '_').
+  /// Directory name under runs/: "key=value,...,seed=N", each part through
+  /// safe_path_component (run_directory.h): '/', spaces and the like become '_'.
   std::string dir_name() const;
   /// The --set assignments of this run ("key=value"), seed excluded.
   std::vector<std::string> overrides() const;
 };
 
+/// Bounds on a sweep (docs/reliability.md "Limits").
+struct SweepLimits {
+  /// Most runs in the whole sweep (every shard together), `cogmap sweep --max-runs`. 10 000
+  /// runs of the largest shipped experiment take about 14 CPU-hours; a product of 10^7 ran out
+  /// of memory while being listed.
+  std::size_t max_runs = 10000;
+};
+
 /// Parses a sweep file strictly (keys: base, seeds, vary, description); throws
-/// yaml::ConfigError naming file, line and key.
-SweepSpec load_sweep(const std::filesystem::path& path);
+/// yaml::ConfigError naming file, line and key. Refused as well: a seed or a value given twice
+/// (`[1, 1]`, `[55, "55"]`, or two values whose run directory names would be equal, which two
+/// threads would then write at once), and more runs than `limits.max_runs`.
+SweepSpec load_sweep(const std::filesystem::path& path, const SweepLimits& limits = {});
 
 /// The cartesian product of the axes (first axis slowest, last fastest), then seeds innermost.
 std::vector<SweepRun> expand_sweep(const SweepSpec& spec);

@@ -31,6 +31,7 @@ enum class Command : std::uint8_t {
   kPulse = 0,
   kOpen = 1,
   kClose = 2,
+  kPolling = 3,  ///< string of sonar numbers 1-32: the firing sequence per array (ARCOS)
   kEnable = 4,
   kSetA = 5,
   kSetV = 6,
@@ -46,6 +47,7 @@ enum class Command : std::uint8_t {
   kSonar = 28,
   kStop = 29,
   kVel2 = 32,
+  kSonarCycle = 48,  ///< int, 2-120 ms per sonar disc (ARCOS)
   kHostBaud = 50,
   kEStop = 55,
 };

@@ -32,8 +32,12 @@ enum class FrameClock {
 
 /// Timeouts and clocks of P2osRobot; defaults suit a real P2-AT (P2AT.md "Connection").
 struct P2osRobotOptions {
-  std::chrono::milliseconds sync_reply_timeout{500};   ///< wait per SYNC echo
-  int sync_attempts = 8;                               ///< SYNC0-2 rounds before giving up
+  std::chrono::milliseconds sync_reply_timeout{500};  ///< wait per SYNC echo
+  int sync_attempts = 8;                              ///< SYNC0-2 rounds before giving up
+  /// The whole handshake (every attempt) ends within this, whatever the peer sends: a peer
+  /// echoing the wrong packet type forever once kept `drive` waiting with no end. 15 s covers
+  /// 8 silent attempts at 3 x 500 ms with a margin; `drive` lowers it to --duration.
+  std::chrono::milliseconds handshake_timeout{15000};
   std::chrono::milliseconds keepalive_period{200};     ///< < 0.5 s (watchdog ~2 s, P2AT.md)
   std::chrono::milliseconds silence_timeout{2000};     ///< no SIP this long: reconnect
   std::chrono::milliseconds reconnect_give_up{30000};  ///< reconnecting longer: disconnected
@@ -61,8 +65,9 @@ struct P2osStats {
 class P2osRobot final : public mapper::Robot {
  public:
   /// Handshakes over `stream` (SYNC0-2, OPEN, ENABLE 1, SONAR 1) and starts the I/O thread.
-  /// Throws StreamError when the robot does not answer or names a subclass other than p2at,
-  /// p2at8 or p2at8+ (the message names the device and what was received).
+  /// The SYNC2 subclass picks the geometry (mapper::find_robot_model) and the conversion
+  /// factors. Throws StreamError when the robot does not answer or names a subclass that is not
+  /// a known Pioneer (the message names the device and what was received).
   P2osRobot(std::unique_ptr<ByteStream> stream, P2osRobotOptions options = {});
   /// Shuts down cleanly (SONAR 0, STOP, CLOSE) if not done already.
   ~P2osRobot() override;

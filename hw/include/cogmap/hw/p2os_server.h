@@ -11,6 +11,8 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cogmap/hw/byte_stream.h"
 #include "cogmap/hw/p2os_packet.h"
@@ -36,6 +38,12 @@ struct P2osServerOptions {
   /// values near 0x7FFF to exercise the wrap).
   std::uint16_t initial_x_count = 0;
   std::uint16_t initial_y_count = 0;
+  /// Where a client's SONAR_CYCLE (#48, milliseconds, 2-120) goes: the body's sonar. Empty:
+  /// the command is accepted and ignored. May throw std::invalid_argument (logged, ignored).
+  std::function<void(int cycle_ms)> set_sonar_cycle_ms;
+  /// Where a client's POLLING (#3) goes, one call per re-sequenced array (array a holds
+  /// transducers 8a..8a+7, 0-based here). May throw std::invalid_argument (logged, ignored).
+  std::function<void(int array, const std::vector<int>& sequence)> set_sonar_polling;
   /// Progress messages ("client synced", "watchdog stop"); may be empty.
   std::function<void(const std::string&)> log;
 };
@@ -96,5 +104,16 @@ class P2osServer {
 
 /// Decodes an integer command argument (0x3B / 0x1B and two bytes); empty when absent.
 std::optional<int> command_int_argument(const p2os::Packet& packet);
+
+/// Decodes a string command argument (0x2B, a length byte, the characters; a NUL ends it
+/// early); empty when absent or when the length runs past the packet.
+std::optional<std::string> command_string_argument(const p2os::Packet& packet);
+
+/// Splits a POLLING string (sonar numbers 1-32, ARCOS manual) into per-array sequences of
+/// 0-based transducer indices: numbers 1-8 go to array 0, 9-16 to array 1, and so on, in
+/// order; only arrays that appear are listed. Empty when a number is outside 1-32 or an array
+/// would get more than 16 entries (the command is then ignored).
+std::optional<std::vector<std::pair<int, std::vector<int>>>> split_polling(
+    const std::string& numbers);
 
 }  // namespace cogmap::hw

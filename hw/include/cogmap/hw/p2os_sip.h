@@ -98,7 +98,8 @@ struct ConversionFactors {
   double sonar_mm_per_unit = 0.268;
 };
 
-/// Factors for "p2at", "p2at8" or "p2at8+" (case-insensitive); std::nullopt otherwise.
+/// Factors (ARIA's params/<subclass>.p) for p2at, p2at8, p2at8+, p3at, p3at-sh, p3dx, p3dx-sh,
+/// p2dx, p2de, p2d8, p2d8+ and peoplebot-sh (case-insensitive); std::nullopt otherwise.
 std::optional<ConversionFactors> conversion_for_subclass(const std::string& subclass);
 
 }  // namespace cogmap::hw::p2os

@@ -28,6 +28,20 @@ class LogError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// What every log reader accepts (docs/reliability.md "Limits"); beyond it a line is an error
+/// naming the file and line, because a mapper fed such a log would build a grid of gigabytes.
+struct LogLimits {
+  /// Longest line, bytes: a frame of 4096 readings (the format's maximum) is about 160 kB.
+  std::size_t max_line_bytes = std::size_t{1} << 20;
+  /// Largest |x| or |y| of an odometry or true pose, metres; the same bound as a world's
+  /// coordinates (a 1e5 m jump made a 3.7 GB run with a 180 MB grid image).
+  double max_coordinate_m = 1000.0;
+  /// Odometry may move at most jump_slack_m + speed_factor x max_speed_mps x dt between two
+  /// frames: twice the header's top speed, plus 1 m for encoder resets and rounding.
+  double jump_slack_m = 1.0;
+  double speed_factor = 2.0;
+};
+
 /// The header line for `geometry`.
 std::string format_log_header(const mapper::RobotGeometry& geometry);
 /// One `F` line (without newline).
@@ -47,13 +61,15 @@ struct LoggedCommand {
 /// Reads a log line by line. Comment (`#`) and blank lines are skipped.
 class LogReader {
  public:
-  /// Opens `path` and parses the header. Throws LogError (file and line) when the file cannot
-  /// be opened or the header is malformed or of another version.
-  explicit LogReader(const std::filesystem::path& path);
+  /// Opens `path` and parses the header. Throws LogError (file and line) when the file is not
+  /// a regular file, or the header is malformed, of another version, or describes geometry no
+  /// robot has (ranges, beam width, body, limits: see detail::check_geometry).
+  explicit LogReader(const std::filesystem::path& path, const LogLimits& limits = {});
 
   const mapper::RobotGeometry& geometry() const { return geometry_; }
 
-  /// The next frame or command; empty at end of file. Throws LogError for a malformed line.
+  /// The next frame or command; empty at end of file. Throws LogError for a malformed line, a
+  /// number that is not finite, time going backwards or an odometry jump beyond `limits`.
   std::optional<std::variant<mapper::SensorFrame, LoggedCommand>> next();
 
   /// The line number of the last line read (1-based).
@@ -63,7 +79,9 @@ class LogReader {
   std::filesystem::path path_;
   std::ifstream in_;
   std::size_t line_no_ = 0;
+  LogLimits limits_;
   mapper::RobotGeometry geometry_;
+  std::optional<mapper::SensorFrame> previous_;  // the last frame, for the sequence checks
 };
 
 /// Appends lines to a log file, flushing after each so a crash loses at most one line.

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "cogmap/mapper/seam/robot.h"
@@ -22,6 +23,7 @@ namespace cogmap::sim {
 /// Everything the experiment file's `robot:` block sets for a simulated robot
 /// (docs/simulator.md lists the keys).
 struct SimRobotOptions {
+  std::string model = "p2at";       ///< robot.model: geometry and drive (mapper robot_models.h)
   SonarModelOptions sonar;          ///< robot.sonar (docs/sonar-model.md)
   OdometryOptions odometry;         ///< robot.odometry (docs/odometry-model.md)
   double cycle_s = 0.1;             ///< one frame per cycle: the P2-AT's 100 ms SIP period
@@ -32,8 +34,10 @@ struct SimRobotOptions {
 };
 
 /// Reads the experiment's `robot:` block for a simulated robot. Keys: source (must be `sim`),
-/// model (must be `p2at`), sonar, odometry, cycle_s (> 0), physics_substeps (1..1000),
-/// rot_accel_radps2 (> 0); all optional. Throws yaml::ConfigError (file, line, key).
+/// model (any of mapper::robot_model_names(); a differential-drive model also sets the
+/// odometry's track defaults, which robot.odometry keys override), sonar, odometry, cycle_s (> 0),
+/// physics_substeps (1..1000), rot_accel_radps2 (> 0); all optional. Throws yaml::ConfigError
+/// (file, line, key).
 SimRobotOptions parse_sim_robot_options(const yaml::Node& robot_block);
 
 /// A simulated robot. next_frame() never ends: the runner decides how long to drive.
@@ -62,6 +66,17 @@ class SimRobot final : public mapper::Robot {
   const SonarScene& scene() const { return scene_; }
   /// The options in use.
   const SimRobotOptions& options() const { return options_; }
+
+  /// The sonar firing cycle from now on, milliseconds (P2OS SONAR_CYCLE, 2-120 ms); throws
+  /// std::invalid_argument outside that range.
+  void set_sonar_cycle_ms(double cycle_ms) { sonar_.set_cycle_ms(cycle_ms, sim_time_s()); }
+  /// Re-sequences one sonar array (P2OS POLLING); throws std::invalid_argument for a
+  /// transducer not on that array.
+  void set_sonar_polling(int array, const std::vector<int>& sequence) {
+    sonar_.set_polling(array, sequence);
+  }
+  /// The sonar model (its schedule and echo candidates), for diagnostics and tests.
+  const SonarModel& sonar() const { return sonar_; }
 
  private:
   mapper::Pose2 pose_at(double time_s) const;

@@ -37,6 +37,8 @@ struct WorldSurfaces {
   /// Convex vertices of those surfaces (wall ends, door jambs, box corners, circle facets):
   /// the edges that echo sonar from any angle.
   std::vector<mapper::Point2> corners;
+  /// Material of each surface (index into WorldSpec::materials), parallel to `surfaces`.
+  std::vector<int> surface_material;
 };
 
 /// Computes the surfaces and corners of a world (O(surfaces x pieces); done once per run).

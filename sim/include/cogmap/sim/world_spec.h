@@ -10,6 +10,7 @@
 
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/mapper/seam/pose2.h"
+#include "cogmap/sim/sonar_material.h"
 #include "cogmap/sim/yaml_strict.h"
 
 namespace cogmap::sim {
@@ -27,6 +28,7 @@ struct SourceRef {
 struct WallPolyline {
   mapper::Polyline points;  ///< world frame, metres; at least 2, no zero-length segment
   double thickness_m = kDefaultWallThicknessM;
+  int material = 0;  ///< index into WorldSpec::materials (the sonar's view of its faces)
   SourceRef source;
 
   /// True when the first and last points coincide (the wall closes on itself: no end caps).
@@ -55,6 +57,7 @@ struct PolygonObstacle {
 /// One obstacle of the world.
 struct Obstacle {
   std::variant<BoxObstacle, CircleObstacle, PolygonObstacle> shape;
+  int material = 0;  ///< index into WorldSpec::materials
   SourceRef source;
 };
 
@@ -64,6 +67,8 @@ struct WorldSpec {
   std::string description;
   std::vector<WallPolyline> walls;
   std::vector<Obstacle> obstacles;
+  /// Sonar materials: the built-ins, then the world's own `materials:` (docs/sonar-model.md).
+  std::vector<SonarMaterial> materials = builtin_sonar_materials();
   mapper::Pose2 start;         ///< the robot's true start pose, world frame
   SourceRef start_source;      ///< where `start` was written
   std::filesystem::path file;  ///< the file it came from (empty for text)

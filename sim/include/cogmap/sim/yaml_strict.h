@@ -29,15 +29,31 @@ class ConfigError : public std::runtime_error {
   std::string key_;
 };
 
+/// Bounds on what a configuration file may be (docs/reliability.md "Limits"). Anything beyond
+/// them is refused with a ConfigError before yaml-cpp builds a tree, so a wrong file (a log, a
+/// device, a generated monster) costs milliseconds, not gigabytes.
+struct LoadLimits {
+  /// Largest file read, bytes. 1 MiB: the largest shipped world or experiment is 2 kB, and
+  /// yaml-cpp holds roughly 80 bytes of tree per byte of text (measured on a 53 MB world).
+  std::size_t max_file_bytes = std::size_t{1} << 20;
+  /// Most nodes in the document, an alias counted at every use ("billion laughs" guard).
+  std::size_t max_nodes = 200000;
+  /// Deepest nesting of mappings and lists; the shipped files nest 4 deep.
+  std::size_t max_depth = 64;
+};
+
 /// A YAML node that remembers which file and key path it came from.
 class Node {
  public:
   Node(YAML::Node node, std::string file, std::string key_path);
 
-  /// Parses a file; syntax errors become ConfigError with the line.
-  static Node load_file(const std::filesystem::path& path);
-  /// Parses text (tests, --set values); `file` names it in errors.
-  static Node load_string(const std::string& text, const std::string& file);
+  /// Parses a file: a regular file of at most limits.max_file_bytes holding exactly one
+  /// document whose mapping keys are plain scalars, each at most once in its mapping. Every
+  /// violation and every syntax error becomes a ConfigError with the line.
+  static Node load_file(const std::filesystem::path& path, const LoadLimits& limits = {});
+  /// Parses text (tests, --set values) with the same checks; `file` names it in errors.
+  static Node load_string(const std::string& text, const std::string& file,
+                          const LoadLimits& limits = {});
 
   const YAML::Node& raw() const { return node_; }
   YAML::Node& raw() { return node_; }
@@ -91,7 +107,8 @@ class Node {
 
 /// Applies one `--set a.b.c=value` override to a document: walks (creating mappings as needed)
 /// and sets the leaf to `value` parsed as YAML (so "55", "true", "[1, 2]" keep their types).
-/// Throws ConfigError (file "--set") for a malformed assignment.
+/// Throws ConfigError (file "--set") for a malformed assignment or a value that breaks the
+/// load checks (a list as a key, a duplicate key).
 void apply_override(YAML::Node& root, const std::string& assignment);
 
 template <>

@@ -22,6 +22,11 @@ struct DoorwayOptions {
   int confirm_frames = 2;          ///< consecutive frames a condition must hold (debounce)
   double max_reading_age_s = 1.0;  ///< older side readings are unknown (a sonar fires ~0.5 s)
   double side_heading_tolerance_rad = 0.35;  ///< a mount within ~20° of ±90° is a side sonar
+  /// The robot must leave the access point at least this far past the gap centre along the
+  /// direction it crossed in (metres): turning on the spot next to a jamb, or backing out of a
+  /// door, makes both sides close and then free without passing anything. 0.2 m is less than
+  /// half the body length (0.313 m), which a robot driving through has always covered.
+  double min_exit_advance_m = 0.2;
 };
 
 /// Options of the fixed-distance cut (thesis §3.1.2, used for hallways).

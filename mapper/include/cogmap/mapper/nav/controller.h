@@ -27,13 +27,19 @@ struct NavInput {
 
 /// What the controller is doing this cycle (for traces, figures and tests).
 enum class NavMode : std::uint8_t {
-  kIdle,     ///< no frame, idle controller, or nothing to do
-  kDrive,    ///< steering along the VFH direction
-  kBlocked,  ///< every sector blocked: turning in place toward the freest sector
-  kBackOff,  ///< recovery: reversing away from where it got stuck
-  kTurn,     ///< recovery: turning in place toward the freest sector
-  kDone,     ///< route finished
+  kIdle,         ///< no frame, idle controller, or nothing to do
+  kDrive,        ///< steering along the VFH direction
+  kBlocked,      ///< every sector blocked: turning in place toward the freest sector
+  kBackOff,      ///< recovery: reversing away from where it got stuck
+  kTurn,         ///< recovery: turning in place toward the freest sector
+  kDone,         ///< route finished
+  kDoorAlign,    ///< door behaviour: driving to the point in front of a sensed opening
+  kDoorCross,    ///< door behaviour: crossing the opening along its axis
+  kExploreDone,  ///< explorer: no unexplored exit left (or a budget ran out)
 };
+
+/// The mode's name for logs and traces ("drive", "door_cross", ...).
+const char* to_string(NavMode mode);
 
 /// The last cycle's decisions, kept so the renderer and the experiments can show them.
 struct NavTrace {
@@ -45,6 +51,8 @@ struct NavTrace {
   std::size_t waypoint_index = 0;  ///< route follower: the waypoint being approached
   std::size_t skipped_waypoints = 0;  ///< route follower: waypoints given up after recoveries
   std::size_t recoveries = 0;         ///< stuck recoveries started so far
+  std::size_t door_passages = 0;      ///< doorways crossed under the door behaviour
+  std::size_t rooms_visited = 0;      ///< explorer: rooms entered (the start room counts)
   std::vector<double> density;        ///< enlarged polar density per sector (Eq. 2.17)
   std::vector<std::uint8_t> blocked;  ///< 1 for a blocked sector after thresholding
 };
@@ -79,6 +87,10 @@ struct VfhOptions {
   int smoothing_sectors = 1;      ///< l of Borenstein's smoothing (used for the freest sector)
   int wide_valley_sectors = 8;    ///< s_max: valleys at least this wide are "wide" (40°)
   int edge_offset_sectors = 4;    ///< wide valley: steer this far inside the nearer edge (20°)
+  double previous_weight = 0.0;   ///< cost of leaving last cycle's direction (VFH+ μ3); 0 =
+                                  ///< the thesis's memoryless choice. VFH+'s 0.4 (μ3/μ1 = 2/5)
+                                  ///< was measured worse: it keeps driving along a wall past
+                                  ///< the door (docs/algorithms.md, "Door passage")
   double heading_weight = 0.2;    ///< cost of turning relative to missing the target (VFH+
                                   ///< μ2/μ1, smaller so the target dominates)
   double grid_min_range_m = 1.5;  ///< room-grid cells nearer than this are ignored; the recent
@@ -119,6 +131,43 @@ struct RecoveryOptions {
   int max_attempts = 3;                ///< per waypoint; one more stuck skips the waypoint
 };
 
+/// The door behaviour (docs/algorithms.md, "Door passage"): when the straight line to the goal
+/// is blocked, look for an opening in the sensed obstacles between the robot and the goal, lock
+/// onto it and cross it along its axis. It reads only the obstacle field (recent sonar and the
+/// live grid) in the estimate frame, so an estimate off by 0.3-0.5 m still finds the real gap.
+struct DoorOptions {
+  bool enabled = true;
+  double min_width_m = 0.7;     ///< narrower sensed gaps are refused: the P2-AT is 0.505 m wide
+                                ///< and the sonar's beam smear narrows a 0.9 m door to ~0.75 m
+  double max_width_m = 1.5;     ///< wider gaps are open space, left to VFH (a door of at
+                                ///< most 1.2 m is sensed no wider; + 0.3 m for 10 cm cells)
+  double search_range_m = 3.5;  ///< jambs are looked for this far (the sonar memory's reach)
+  double max_offset_m = 1.6;    ///< an opening's centre may lie this far off the goal line
+                                ///< (0.5 m estimate drift + door offsets along a 5 m wall)
+  double depth_m = 0.3;         ///< a point this far beyond the jamb line still closes a gap
+  double bin_deg = 3.0;         ///< the polar scan's bins (nearest point per bin)
+  double approach_m = 0.8;      ///< align on the door axis this far before the opening
+  double exit_m = 0.7;          ///< the crossing ends this far beyond it (half the body + margin)
+  double lookahead_m = 0.6;     ///< pure pursuit along the axis while crossing
+  double align_tolerance_m = 0.12;  ///< lateral error at which the crossing starts
+  double speed_mps = 0.3;           ///< crossing speed: 2.3 s through a 0.7 m band, time for the
+                                    ///< side sonars (fired every ~0.5 s) to see both jambs
+  double track_m = 0.4;             ///< a re-detected opening within this is the same door
+  double confirm_s = 0.3;           ///< detected this long without a break before it is trusted
+                                    ///< (3 cycles): one-cycle gaps between sparse early echoes
+                                    ///< are ignored; 1.0 s was measured worse (the detection
+                                    ///< flickers while the robot turns and is never confirmed)
+  double timeout_s = 25.0;          ///< a passage not done in this long is abandoned (bounded)
+  double lost_s = 6.0;              ///< ...as is one not re-detected for this long before crossing
+                                    ///< (twice the sonar memory's 3 s)
+  double closed_after_s = 3.0;      ///< crossing: less than closed_progress_m along the axis in
+  double closed_progress_m = 0.15;  ///< this long means the opening is closed (at the door
+                                    ///< speed 0.15 m takes 0.5 s; recoveries start at 4 s)
+  double jamb_support_m = 0.35;     ///< a jamb point needs a wall point this close beyond it
+                                    ///< (10 cm cells, a 30° beam at 1-2 m leaves 0.1-0.3 m gaps)
+  double rejected_keep_s = 30.0;    ///< a closed or abandoned opening is not retried this long
+};
+
 /// The route follower (experiments drive a robot through a list of world points).
 struct RouteOptions {
   double speed_mps = 0.5;             ///< thesis §4: the robot drove at 0.5 m/s
@@ -134,6 +183,13 @@ struct RouteOptions {
   MemoryOptions memory;
   SafetyOptions safety;
   RecoveryOptions recovery;
+  DoorOptions door;
+  double give_up_s = 40.0;       ///< a waypoint not approached by progress_m within this long is
+                                 ///< given up: the longest leg in a 5 x 5 m room (7 m) takes 14 s,
+                                 ///< plus a door passage (~10 s) and a recovery, with margin
+  double progress_m = 0.3;       ///< what counts as approaching
+  double blocked_reach_m = 0.9;  ///< a waypoint this close behind a sensed obstacle (a door
+                                 ///< centre the drifted estimate puts in the jamb) is reached
 };
 
 /// The explorer (thesis §1.1.4, Fig. 1.2): head for the most unexplored free direction.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
@@ -40,7 +41,12 @@ class Vfh {
   /// The candidate direction (world) of least cost |target - c| + heading_weight·|heading - c|:
   /// candidates are the target itself when it lies inside a wide valley away from its edges,
   /// each wide valley's edges offset inward, and each narrow valley's centre.
-  VfhChoice select(double target_rad, double heading_rad) const;
+  /// With `previous_rad` (last cycle's choice) the cost gains previous_weight·|previous - c|
+  /// (VFH+'s μ3): near a wall the two valley edges cost about the same, and without it the
+  /// choice flips between them every few cycles (the robot swings left and right in front of
+  /// a doorway).
+  VfhChoice select(double target_rad, double heading_rad,
+                   std::optional<double> previous_rad = std::nullopt) const;
   /// select() with the heading equal to the target (no turning preference).
   VfhChoice select(double target_rad) const { return select(target_rad, target_rad); }
 

@@ -27,6 +27,7 @@ struct RobotGeometry {
 };
 
 /// The Pioneer P2-AT: 16 sonars at the mounts of docs/p2at.md, limits as MobileSim models them.
+/// Other Pioneers: find_robot_model() in robot_models.h.
 RobotGeometry p2at_geometry();
 
 }  // namespace cogmap::mapper

@@ -47,6 +47,15 @@ AsrGraph read_asr_graph_json(const std::filesystem::path& path);
 /// the path on any failure.
 void write_file_atomic(const std::filesystem::path& path, std::string_view content);
 
+/// True for the name of a temporary file this module or the PNG writer makes:
+/// ".<name>.tmp-<pid>-<n>" or ".<name>.tmp.<pid>.<n>".
+bool is_temp_file_name(const std::string& file_name);
+
+/// Removes the temporary files an interrupted writer (kill -9, power loss) left in `dir`
+/// (not recursive). Only names matching is_temp_file_name are touched. Returns how many were
+/// removed. Call it only while no other writer works in `dir` (the run directory lock).
+std::size_t remove_stale_temp_files(const std::filesystem::path& dir);
+
 /// Reads a whole file; throws std::runtime_error naming the path when it cannot.
 std::string read_file(const std::filesystem::path& path);
 

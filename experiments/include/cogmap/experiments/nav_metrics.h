@@ -1,0 +1,45 @@
+#pragma once
+/// The `nav` block of metrics.json (docs/metrics.md): how the robot drove itself. Everything
+/// but `contacts`/`contact_s` comes from what the robot itself knows (odometry, stall flags,
+/// the controller's own account); contacts need the true pose and the true surfaces.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "cogmap/experiments/metrics.h"
+#include "cogmap/mapper/seam/geometry.h"
+#include "cogmap/mapper/seam/robot_geometry.h"
+
+namespace cogmap::experiments {
+
+/// The nav block.
+struct NavMetrics {
+  std::optional<bool> route_completed;       ///< route controllers only
+  std::size_t waypoints_total = 0;           ///< route controllers only
+  std::size_t waypoints_skipped = 0;         ///< given up after bounded recoveries
+  std::size_t recoveries = 0;                ///< back-off-and-turn recoveries started
+  std::size_t door_passages = 0;             ///< doorways passed by the door behaviour
+  std::optional<std::size_t> contacts;       ///< touches of a wall or obstacle (needs truth)
+  std::optional<double> contact_s;           ///< frames in contact × frame time (needs truth)
+  double distance_m = 0.0;                   ///< odometry path length (the robot's own count)
+  double stalled_s = 0.0;                    ///< time with either stall flag set
+  std::optional<std::size_t> rooms_visited;  ///< explore: rooms the explorer entered
+  std::optional<bool> exploration_complete;  ///< explore: stopped with no unexplored exit left
+};
+
+/// A frame counts as a contact when the true footprint (a length_m × width_m rectangle about
+/// the centre) is within this of a true surface: Box2D keeps polygons 0.01 m apart (its
+/// polygon skin), so a touching body sits 0.00-0.02 m from the surface.
+inline constexpr double kContactDistanceM = 0.02;
+
+/// Counts contact episodes (a run of consecutive frames in contact is one) and their time,
+/// from the true poses of `rows` (rows without truth are skipped) against `surfaces`.
+void add_contacts(NavMetrics& nav, std::span<const TrajectoryRow> rows,
+                  std::span<const mapper::Segment> surfaces, const mapper::RobotGeometry& robot);
+
+/// Odometry path length of `rows`, metres.
+double odometry_distance_m(std::span<const TrajectoryRow> rows);
+
+}  // namespace cogmap::experiments

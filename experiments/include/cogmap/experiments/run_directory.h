@@ -1,0 +1,65 @@
+#pragma once
+/// The run directory as a resource that must never hurt the user's files (docs/reliability.md):
+/// which directories may take a run, the lock that keeps two writers out of one directory,
+/// the clean-up of an interrupted run, and the experiment.yaml that makes a run re-runnable.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cogmap/experiments/experiment_config.h"
+
+namespace cogmap::experiments {
+
+/// A directory that cannot take a run: it holds an input, foreign files, or another process
+/// is writing it. The message names the directory and what to do instead.
+class RunDirectoryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The marker file every run directory gets first (its presence makes a directory ours).
+inline constexpr const char* kRunMarkerName = ".cogmap-run";
+/// The lock file (flock) of a run directory.
+inline constexpr const char* kRunLockName = ".cogmap-lock";
+
+/// `name` as one safe path component: letters, digits and `._-+=,` kept, everything else
+/// (slashes, spaces, newlines, colons) becomes `_`; a leading dot becomes `_` (no hidden or
+/// `..` names); empty becomes `_`; at most 100 bytes. Used for every default output path.
+std::string safe_path_component(std::string_view name);
+
+/// Throws RunDirectoryError unless `dir` may take a run: it does not exist, is empty, carries
+/// the run marker, or holds only files a run writes (docs/cli.md); and it is not the folder of
+/// any of `inputs` (the experiment file, a log), which a run would overwrite.
+void check_run_directory(const std::filesystem::path& dir,
+                         const std::vector<std::filesystem::path>& inputs);
+
+/// An exclusive lock on a run directory for the object's lifetime (flock on DIR/.cogmap-lock,
+/// released by the kernel even after kill -9). Two threads or processes never write one
+/// directory.
+class RunDirectoryLock {
+ public:
+  /// Creates `dir` if needed and takes the lock; throws RunDirectoryError when another
+  /// writer holds it or the directory cannot be made.
+  explicit RunDirectoryLock(const std::filesystem::path& dir);
+  ~RunDirectoryLock();
+  RunDirectoryLock(const RunDirectoryLock&) = delete;
+  RunDirectoryLock& operator=(const RunDirectoryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+/// Makes `dir` ready for a run, under its lock: checks it (check_run_directory), writes the
+/// marker, removes temp files an interrupted writer left (DIR, DIR/asrs, DIR/figures) and the
+/// products of an earlier run (clear_run_outputs), then writes experiment.yaml
+/// (run_experiment_yaml). Throws RunDirectoryError or std::runtime_error.
+void prepare_run_directory(const std::filesystem::path& dir, const Experiment& experiment);
+
+/// experiment.yaml as saved in run directory `dir`: the resolved experiment, with a relative
+/// `world:` rewritten relative to `dir`, so `cogmap run DIR/experiment.yaml` finds the world.
+std::string run_experiment_yaml(const Experiment& experiment, const std::filesystem::path& dir);
+
+}  // namespace cogmap::experiments

@@ -1,0 +1,84 @@
+#include "cogmap/experiments/nav_metrics.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace cogmap::experiments {
+namespace {
+
+using mapper::Point2;
+
+double point_segment_m(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 ab = b - a;
+  const double len_sq = ab.squaredNorm();
+  const double t = len_sq > 0.0 ? std::clamp((p - a).dot(ab) / len_sq, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool segments_cross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+double segment_segment_m(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  if (segments_cross(a, b, c, d)) return 0.0;
+  return std::min({point_segment_m(a, c, d), point_segment_m(b, c, d), point_segment_m(c, a, b),
+                   point_segment_m(d, a, b)});
+}
+
+/// Distance from the footprint's outline to the nearest surface (0 when one crosses it).
+/// A surface entirely inside the footprint is impossible in the simulator (Box2D keeps the
+/// body out), so the outline suffices.
+double footprint_clearance_m(const mapper::Pose2& pose, std::span<const mapper::Segment> surfaces,
+                             const mapper::RobotGeometry& robot) {
+  const double hl = 0.5 * robot.length_m, hw = 0.5 * robot.width_m;
+  const std::array<Point2, 4> corners = {
+      pose.transform(Point2(hl, hw)), pose.transform(Point2(-hl, hw)),
+      pose.transform(Point2(-hl, -hw)), pose.transform(Point2(hl, -hw))};
+  const Point2 c = pose.translation();
+  const double reach = std::hypot(hl, hw) + kContactDistanceM;
+  double best = std::numeric_limits<double>::infinity();
+  for (const mapper::Segment& s : surfaces) {
+    if (point_segment_m(c, s.a, s.b) > reach) continue;  // cheap rejection
+    for (int i = 0; i < 4; ++i) {
+      best = std::min(best, segment_segment_m(corners[i], corners[(i + 1) % 4], s.a, s.b));
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+void add_contacts(NavMetrics& nav, std::span<const TrajectoryRow> rows,
+                  std::span<const mapper::Segment> surfaces, const mapper::RobotGeometry& robot) {
+  std::size_t episodes = 0;
+  double time_s = 0.0;
+  bool touching = false;
+  std::optional<double> last_t;
+  for (const TrajectoryRow& r : rows) {
+    if (!r.truth) continue;
+    const bool now = footprint_clearance_m(*r.truth, surfaces, robot) <= kContactDistanceM;
+    if (now && !touching) ++episodes;
+    if (now && last_t) time_s += r.t_s - *last_t;
+    touching = now;
+    last_t = r.t_s;
+  }
+  nav.contacts = episodes;
+  nav.contact_s = time_s;
+}
+
+double odometry_distance_m(std::span<const TrajectoryRow> rows) {
+  double d = 0.0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    d += (rows[i].odometry.translation() - rows[i - 1].odometry.translation()).norm();
+  }
+  return d;
+}
+
+}  // namespace cogmap::experiments

@@ -1,0 +1,129 @@
+// Frames from bag streams. RosAria and p2os publish every transducer's last value each cycle;
+// a value that did not change is the same old reading, so it is skipped (a genuine repeat of
+// the identical range is lost too, which costs one reading now and then).
+#include "bag_frames.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "cogmap/mapper/seam/pose2.h"
+
+namespace cogmap::hw::bag {
+namespace {
+
+std::string at(const std::string& topic, std::size_t index) {
+  return "topic " + topic + ", message " + std::to_string(index) + ": ";
+}
+
+// Stamps on one topic must be set and never go backwards.
+template <typename Message>
+void check_stamps(const std::vector<Message>& messages, const std::string& topic) {
+  for (std::size_t i = 0; i < messages.size(); ++i) {
+    const Message& m = messages[i];
+    if (!(m.stamp_s > 0.0) || !std::isfinite(m.stamp_s)) {
+      throw std::runtime_error(at(topic, m.index) + "header stamp is unset (0)");
+    }
+    if (i > 0 && m.stamp_s < messages[i - 1].stamp_s) {
+      throw std::runtime_error(at(topic, m.index) + "header stamp " + std::to_string(m.stamp_s) +
+                               " s is earlier than message " +
+                               std::to_string(messages[i - 1].index) + "'s " +
+                               std::to_string(messages[i - 1].stamp_s) + " s: time goes backwards");
+    }
+  }
+}
+
+// Odometry at a time: linear in position, shortest way round in heading.
+std::optional<mapper::Pose2> odometry_at(const std::vector<PoseMessage>& poses, double t) {
+  if (poses.empty() || t < poses.front().stamp_s || t > poses.back().stamp_s) return std::nullopt;
+  const auto it = std::lower_bound(poses.begin(), poses.end(), t,
+                                   [](const PoseMessage& p, double s) { return p.stamp_s < s; });
+  const PoseMessage& b = *it;
+  if (b.stamp_s == t) return mapper::Pose2{b.x_m, b.y_m, b.yaw_rad};
+  const PoseMessage& a = *(it - 1);
+  if (b.stamp_s - a.stamp_s > kMaxOdometryGapS) return std::nullopt;
+  const double f = (t - a.stamp_s) / (b.stamp_s - a.stamp_s);
+  return mapper::Pose2{
+      a.x_m + f * (b.x_m - a.x_m), a.y_m + f * (b.y_m - a.y_m),
+      mapper::wrap_angle_rad(a.yaw_rad + f * mapper::wrap_angle_rad(b.yaw_rad - a.yaw_rad))};
+}
+
+// One transducer's value as the message gives it: a point for clouds, a range for arrays.
+struct Value {
+  double a = 0.0, b = 0.0;
+  bool operator==(const Value&) const = default;
+};
+
+}  // namespace
+
+void build_frames(const Streams& streams, const StreamRequest& request,
+                  const mapper::RobotGeometry& geometry, ImportedLog& out, BagImportStats& stats) {
+  check_stamps(streams.sonar, request.sonar_topic);
+  check_stamps(streams.poses, request.odometry_topic);
+  stats.sonar_messages = streams.sonar.size();
+  stats.odometry_messages = streams.poses.size();
+  if (streams.sonar.empty()) throw std::runtime_error("topic " + request.sonar_topic + " is empty");
+  if (streams.poses.empty()) {
+    throw std::runtime_error(request.odometry == OdometryEncoding::kTf
+                                 ? "topic " + request.odometry_topic +
+                                       " has no odom -> base_link transform"
+                                 : "topic " + request.odometry_topic + " is empty");
+  }
+  const double t0 = std::min(streams.sonar.front().stamp_s, streams.poses.front().stamp_s);
+  const bool ranges = request.sonar == SonarEncoding::kSonarArray;
+  const double max_m = geometry.sonar_max_range_m;
+  std::vector<std::optional<Value>> last(geometry.sonars.size());
+
+  for (const SonarMessage& m : streams.sonar) {
+    const std::size_t n = ranges ? m.ranges_m.size() : m.x_m.size();
+    if (n > geometry.sonars.size()) {
+      throw std::runtime_error(at(request.sonar_topic, m.index) + std::to_string(n) +
+                               " transducers, but the robot model has " +
+                               std::to_string(geometry.sonars.size()) +
+                               " sonars: pass the right --robot");
+    }
+    const std::optional<mapper::Pose2> pose = odometry_at(streams.poses, m.stamp_s);
+    mapper::SensorFrame frame;
+    frame.time_s = m.stamp_s - t0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Value v = ranges ? Value{m.ranges_m[i], 0.0} : Value{m.x_m[i], m.y_m[i]};
+      if (!std::isfinite(v.a) || !std::isfinite(v.b)) {
+        throw std::runtime_error(at(request.sonar_topic, m.index) + "transducer " +
+                                 std::to_string(i) + " is not a finite number");
+      }
+      // Never reported: RosAria leaves the point at the robot's origin, p2os the range at 0.
+      if (ranges ? v.a <= 0.0 : (v.a == 0.0 && v.b == 0.0)) {
+        ++stats.rejected_unreported;
+        continue;
+      }
+      if (last[i] && *last[i] == v) {
+        ++stats.rejected_unchanged;
+        continue;
+      }
+      last[i] = v;
+      if (!pose) {
+        ++stats.rejected_no_odometry;
+        continue;
+      }
+      const mapper::SonarMount& mount = geometry.sonars[i];
+      // RosAria's point is where the echo came from, robot frame: range from the transducer.
+      const double range_m = ranges ? v.a : std::hypot(v.a - mount.x_m, v.b - mount.y_m);
+      mapper::SonarReading r;
+      r.index = static_cast<int>(i);
+      r.time_s = frame.time_s;
+      r.echo = range_m < max_m - kNoEchoMarginM;
+      r.range_m = r.echo ? range_m : max_m;
+      if (!r.echo) ++stats.readings_no_echo;
+      ++stats.readings_accepted;
+      frame.sonar.push_back(r);
+    }
+    if (!pose) continue;
+    frame.odometry = *pose;
+    out.frames.push_back(std::move(frame));
+  }
+  stats.frames = out.frames.size();
+}
+
+}  // namespace cogmap::hw::bag

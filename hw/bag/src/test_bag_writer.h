@@ -1,0 +1,57 @@
+#pragma once
+// Test support: writes small bags with the rosbag API, in the shapes RosAria and p2os record
+// them. C++17 behind plain types, like the reader (ros_bag_reader.h says why).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cogmap::hw::bag::testing {
+
+/// A point in the robot frame, metres.
+struct Xy {
+  double x_m = 0.0, y_m = 0.0;
+};
+
+/// How a p2os_msgs/SonarArray is written: as p2os does, or broken on purpose.
+enum class SonarArrayVariant {
+  kGood,
+  kWrongDefinition,  ///< same type name, another layout (and so another MD5)
+  kTruncated,        ///< ranges_count and the array length, but no range values
+};
+
+/// Chunk compression, as `rosbag record --bz2 / --lz4` writes it.
+enum class Compression { kNone, kBz2, kLz4 };
+
+/// Writes one bag; closed by close() or the destructor.
+class TestBagWriter {
+ public:
+  explicit TestBagWriter(const std::string& path, Compression compression = Compression::kNone);
+  ~TestBagWriter();
+
+  /// nav_msgs/Odometry (frame odom, child base_link). Every message is recorded at its stamp
+  /// unless `record_s` (the bag's receive time) is given.
+  void odometry(const std::string& topic, double stamp_s, double x_m, double y_m, double yaw_rad,
+                double record_s = -1.0);
+  /// tf2_msgs/TFMessage with one transform parent -> child.
+  void tf(const std::string& topic, double stamp_s, double x_m, double y_m, double yaw_rad,
+          const std::string& parent = "odom", const std::string& child = "base_link");
+  /// sensor_msgs/PointCloud, one float32 point per transducer (RosAria /RosAria/sonar).
+  void point_cloud(const std::string& topic, double stamp_s, const std::vector<Xy>& points,
+                   double record_s = -1.0);
+  /// sensor_msgs/PointCloud2 with float32 x, y, z as RosAria's conversion writes it.
+  void point_cloud2(const std::string& topic, double stamp_s, const std::vector<Xy>& points);
+  /// p2os_msgs/SonarArray (ranges in metres, transducer order).
+  void sonar_array(const std::string& topic, double stamp_s, const std::vector<double>& ranges_m,
+                   SonarArrayVariant variant = SonarArrayVariant::kGood);
+  /// A sensor_msgs/PointCloud whose bytes end after the header: a message that cannot decode.
+  void truncated_point_cloud(const std::string& topic, double stamp_s);
+  /// Finishes the file (also done by the destructor).
+  void close();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cogmap::hw::bag::testing

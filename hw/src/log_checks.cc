@@ -1,0 +1,117 @@
+#include "log_checks.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <system_error>
+
+namespace cogmap::hw::detail {
+namespace {
+
+std::string num(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+void in_range(double v, double lo, double hi, const char* field, const std::string& where) {
+  if (!(std::isfinite(v) && v >= lo && v <= hi)) {
+    throw LogError(where + ": " + field + " must be in [" + num(lo) + ", " + num(hi) + "], got " +
+                   num(v));
+  }
+}
+
+}  // namespace
+
+void require_regular_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) {
+    throw LogError(path.string() + ": cannot open log: no such file");
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    throw LogError(path.string() + ": not a regular file (a device, pipe or directory)");
+  }
+}
+
+bool read_bounded_line(std::istream& in, std::string& line, const std::filesystem::path& path,
+                       std::size_t line_no, const LogLimits& limits) {
+  line.clear();
+  std::istream::sentry sentry(in, true);
+  if (!sentry) return false;
+  std::streambuf* buf = in.rdbuf();
+  for (;;) {
+    const int c = buf->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(std::ios::eofbit);
+      if (line.empty()) in.setstate(std::ios::failbit);
+      return !line.empty();
+    }
+    if (c == '\n') return true;
+    if (line.size() >= limits.max_line_bytes) {
+      throw LogError(path.string() + ":" + std::to_string(line_no) + ": line longer than " +
+                     std::to_string(limits.max_line_bytes) + " bytes: not a text log");
+    }
+    line.push_back(static_cast<char>(c));
+  }
+}
+
+void check_geometry(const mapper::RobotGeometry& g, const std::string& where) {
+  // Bounds wide enough for any wheeled indoor robot and its sonars or rangefinders, narrow
+  // enough that a mapper sized by them stays in memory.
+  in_range(g.sonar_max_range_m, 0.05, 50.0, "sonar_max_range_m", where);
+  in_range(g.sonar_min_range_m, 0.0, g.sonar_max_range_m, "sonar_min_range_m", where);
+  if (!(g.sonar_min_range_m < g.sonar_max_range_m)) {
+    throw LogError(where + ": sonar_min_range_m must be below sonar_max_range_m");
+  }
+  in_range(g.sonar_beam_width_rad, 1e-3, std::numbers::pi, "sonar_beam_width_rad", where);
+  in_range(g.length_m, 0.01, 10.0, "length_m", where);
+  in_range(g.width_m, 0.01, 10.0, "width_m", where);
+  in_range(g.max_speed_mps, 1e-3, 10.0, "max_speed_mps", where);
+  in_range(g.max_turn_rate_radps, 1e-3, 100.0, "max_turn_rate_radps", where);
+  in_range(g.max_accel_mps2, 1e-3, 100.0, "max_accel_mps2", where);
+  in_range(g.max_decel_mps2, 1e-3, 100.0, "max_decel_mps2", where);
+  for (std::size_t i = 0; i < g.sonars.size(); ++i) {
+    const std::string field = "sonar mount " + std::to_string(i);
+    in_range(g.sonars[i].x_m, -10.0, 10.0, (field + " x_m").c_str(), where);
+    in_range(g.sonars[i].y_m, -10.0, 10.0, (field + " y_m").c_str(), where);
+    in_range(g.sonars[i].heading_rad, -100.0, 100.0, (field + " heading_rad").c_str(), where);
+  }
+}
+
+void check_frame(const mapper::SensorFrame& f, const mapper::SensorFrame* previous,
+                 const mapper::RobotGeometry& geometry, const LogLimits& limits,
+                 const std::string& where) {
+  const double lim = limits.max_coordinate_m;
+  in_range(f.time_s, -1e9, 1e9, "time_s", where);
+  in_range(f.odometry.x_m, -lim, lim, "odometry x_m", where);
+  in_range(f.odometry.y_m, -lim, lim, "odometry y_m", where);
+  in_range(f.odometry.theta_rad, -1e6, 1e6, "odometry theta_rad", where);
+  if (f.true_pose) {
+    in_range(f.true_pose->x_m, -lim, lim, "true x_m", where);
+    in_range(f.true_pose->y_m, -lim, lim, "true y_m", where);
+    in_range(f.true_pose->theta_rad, -1e6, 1e6, "true theta_rad", where);
+  }
+  for (const mapper::SonarReading& r : f.sonar) {
+    in_range(r.range_m, 0.0, 1e3, "sonar range_m", where);
+    in_range(r.time_s, -1e9, 1e9, "sonar time_s", where);
+  }
+  if (previous) {
+    const double dt_s = f.time_s - previous->time_s;
+    if (dt_s < 0.0) {
+      throw LogError(where + ": time goes backwards (" + num(f.time_s) + " s after " +
+                     num(previous->time_s) + " s)");
+    }
+    const double jump_m = std::hypot(f.odometry.x_m - previous->odometry.x_m,
+                                     f.odometry.y_m - previous->odometry.y_m);
+    const double allowed_m =
+        limits.jump_slack_m + limits.speed_factor * geometry.max_speed_mps * dt_s;
+    if (jump_m > allowed_m) {
+      throw LogError(where + ": odometry jumps " + num(jump_m) + " m in " + num(dt_s) +
+                     " s (at most " + num(allowed_m) + " m at max_speed_mps " +
+                     num(geometry.max_speed_mps) + ")");
+    }
+  }
+}
+
+}  // namespace cogmap::hw::detail

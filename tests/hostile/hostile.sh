@@ -1,0 +1,302 @@
+#!/usr/bin/env bash
+# The hostile-input suite (issue 12, docs/reliability.md): small generated files that once
+# crashed, hung or clobbered something, each run against the real CLI with a time limit.
+#   hostile.sh COGMAP SRC OUT CASE   one case (ctest runs each as hostile.CASE)
+#   hostile.sh COGMAP SRC OUT --list the case names
+#   hostile.sh COGMAP SRC OUT --table every case, as the markdown table of docs/reliability.md
+# A case passes when the exit code is the expected one, the output holds the expected text,
+# it ends within its time limit and its own extra checks hold (files untouched, no escape).
+set -uo pipefail
+cogmap=$1 src=$2 out=$3 what=$4
+if [[ $what != --list ]]; then  # cases cd elsewhere: every path absolute
+  cogmap=$(realpath -m "$cogmap") src=$(realpath -m "$src") out=$(realpath -m "$out")
+fi
+W=$src/worlds
+H='cogmap-log 1 sonar_min_range_m=0.1 sonar_max_range_m=5 sonar_beam_width_rad=0.5236 length_m=0.626 width_m=0.505 max_speed_mps=0.75 max_turn_rate_radps=1.74 max_accel_mps2=0.3 max_decel_mps2=0.6 sonars=2 0.147,0.136,1.5708 0.193,0.119,0.8727'
+
+CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_segment
+  key_list_world key_list_experiment key_list_mapper key_list_sweep key_list_set
+  dev_zero_world dev_zero_experiment dev_urandom_experiment big_experiment big_world
+  sweep_ten_million sweep_ten_million_shard cycle_1e9 explore_1e12 duration_flag_huge
+  out_is_experiment_folder out_is_foreign_folder name_escapes name_absolute duplicate_key
+  second_document text_after_document seed_minus_one sweep_duplicate_seeds sweep_duplicate_values
+  log_nan_odometry log_inf_time log_nan_mount log_jump_1e5 log_jump_50m log_max_range_zero log_beam_width_100
+  log_min_above_max log_time_backwards log_header_only log_carmen_on_cogmap log_dev_zero
+  replay_name_colon replay_name_newline stale_temp_files rerun_run_directory locked_directory
+  drive_handshake_wrong_packets)
+
+# A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
+good_log() {
+  echo "$H"
+  for i in 1 2 3 4 5 6 7 8 9; do echo "F 0.$i 0.0$i 0 0 0 0 - 1 0,1.5,1,0.$i"; done
+}
+short_experiment() {  # name world duration
+  printf 'name: %s\nworld: %s\nduration_s: %s\nrobot: {source: sim}\noutput: {figures: false}\n' \
+    "$1" "$2" "$3"
+}
+
+# Sets: cmd (array), want_rc, want_text, limit_s; may define check() for extra assertions.
+setup() {
+  local d=$1
+  check() { return 0; }
+  limit_s=10
+  case $what in
+    world_tiny_segment)
+      printf 'name: w\nwalls: {polylines: [[[0,0],[0.002,0],[5,0]]]}\nstart: {x_m: 2, y_m: 2}\n' >"$d/w.yaml"
+      short_experiment e w.yaml 5 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="w.yaml:2: walls.polylines[0][1]: wall segment of 0.002 m is shorter" ;;
+    world_jog_2mm)
+      printf 'name: w\nwalls:\n  polylines:\n    - [[0,0],[3,0],[3,0.002],[6,0.002],[6,4],[0,4],[0,0]]\nstart: {x_m: 2, y_m: 2}\n' >"$d/w.yaml"
+      short_experiment e w.yaml 5 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="w.yaml:4: walls.polylines[0][2]: wall segment of 0.002 m" ;;
+    world_huge_coordinates)
+      printf 'name: w\nwalls: {polylines: [[[3e6,0],[3e6,5]]]}\nstart: {x_m: 2, y_m: 2}\n' >"$d/w.yaml"
+      short_experiment e w.yaml 5 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="coordinate 3e+06 m is beyond the +/-1000 m" ;;
+    world_check_tiny_segment)
+      printf 'name: w\nwalls: {polylines: [[[0,0],[0.001,0]]]}\nstart: {x_m: 2, y_m: 2}\n' >"$d/w.yaml"
+      cmd=("$cogmap" world check "$d/w.yaml"); want_rc=1
+      want_text="ERROR $d/w.yaml:2: walls.polylines[0][1]: wall segment of 0.001 m" ;;
+    key_list_world)
+      printf 'name: w\n? [a, b]\n: 1\nwalls: {polylines: []}\nstart: {x_m: 0, y_m: 0}\n' >"$d/w.yaml"
+      cmd=("$cogmap" world check "$d/w.yaml"); want_rc=1
+      want_text="w.yaml:2: a key must be a plain name" ;;
+    key_list_experiment)
+      printf 'name: e\n? [a, b]: 1\nworld: %s/two_rooms.yaml\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:2: a key must be a plain name" ;;
+    key_list_mapper)
+      printf 'name: e\nworld: %s/two_rooms.yaml\nmapper:\n  ? [grid]\n  : bayes\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:4: mapper: a key must be a plain name" ;;
+    key_list_sweep)
+      short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\nvary:\n  ? [mapper.grid]\n  : [bayes]\n' >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw"); want_rc=2
+      want_text="s.sweep.yaml:4: vary: a key must be a plain name" ;;
+    key_list_set)
+      short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --set 'mapper={? [a]: 1}' --out "$d/run"); want_rc=2
+      want_text="--set: mapper: value is not valid: a key must be a plain name" ;;
+    dev_zero_world)
+      cmd=("$cogmap" world check /dev/zero); want_rc=1
+      want_text="ERROR /dev/zero: not a regular file" ;;
+    dev_zero_experiment)
+      cmd=("$cogmap" run /dev/zero --out "$d/run"); want_rc=2
+      want_text="/dev/zero: not a regular file" ;;
+    dev_urandom_experiment)
+      cmd=("$cogmap" run /dev/urandom --out "$d/run"); want_rc=2
+      want_text="/dev/urandom: not a regular file" ;;
+    big_experiment)
+      { short_experiment e "$W/two_rooms.yaml" 5; head -c 2000000 /dev/zero | tr '\0' '#'; echo; } >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml: larger than the 1048576-byte limit" ;;
+    big_world)
+      { printf 'name: w\nwalls:\n  polylines:\n'; for i in $(seq 0 40000); do echo "    - [[$i, 0], [$i, 0.5]]"; done; } >"$d/w.yaml"
+      cmd=("$cogmap" world check "$d/w.yaml"); want_rc=1
+      want_text="w.yaml: larger than the 1048576-byte limit" ;;
+    sweep_ten_million|sweep_ten_million_shard)
+      short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
+      { echo 'base: e.yaml'; echo 'seeds: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]';
+        echo 'vary:'; for k in cell_scale_mm occupied_threshold vertex_tolerance_cells \
+          polyline_gap_cells douglas_peucker_cells window_m; do
+          echo "  mapper.$k: [$(seq -s ', ' 11 20)]"; done; } >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw")
+      [[ $what == *shard ]] && cmd+=(--shard 3/1000)
+      want_rc=2; want_text="the sweep has more than 10000 runs" ;;
+    cycle_1e9)
+      printf 'name: e\nworld: %s/two_rooms.yaml\nrobot: {cycle_s: 1e-9}\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:3: robot.cycle_s: cycle_s must be in [0.01, 10] seconds" ;;
+    explore_1e12)
+      printf 'name: e\nworld: %s/two_rooms.yaml\nduration_s: 1e12\ncontroller: {type: explore}\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:3: duration_s: must be at most 14400 s" ;;
+    duration_flag_huge)
+      cmd=("$cogmap" drive --tcp 127.0.0.1:9 --duration 1e12 --out "$d/run"); want_rc=2
+      want_text="--duration 1e+12 is above the 14400 s run-duration limit" ;;
+    out_is_experiment_folder)
+      mkdir -p "$d/mine"; { echo '# my own comment'; short_experiment e "$W/two_rooms.yaml" 5; } >"$d/mine/exp.yaml"
+      echo precious >"$d/mine/notes.txt"
+      sum=$(cat "$d/mine/exp.yaml" "$d/mine/notes.txt" | md5sum)
+      cmd=("$cogmap" run "$d/mine/exp.yaml" --out "$d/mine" --set duration_s=3 --force); want_rc=2
+      want_text="is the folder of the input"
+      check() { [[ $(cat "$d/mine/exp.yaml" "$d/mine/notes.txt" | md5sum) == "$sum" ]] && [[ $(ls -A "$d/mine" | wc -l) -eq 2 ]]; } ;;
+    out_is_foreign_folder)
+      short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
+      mkdir -p "$d/home/figures"; echo mine >"$d/home/map.svg"; echo mine >"$d/home/thesis.tex"
+      echo png >"$d/home/figures/holiday.png"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/home" --force); want_rc=2
+      want_text="which no cogmap run wrote"
+      check() { [[ -s $d/home/map.svg && -s $d/home/figures/holiday.png && ! -e $d/home/.cogmap-lock ]]; } ;;
+    name_escapes|name_absolute)
+      local name='../../escaped'; [[ $what == name_absolute ]] && name=/abs/olute
+      mkdir -p "$d/cwd/sub"; short_experiment "$name" "$W/two_rooms.yaml" 2 >"$d/cwd/sub/e.yaml"
+      cmd=(bash -c "cd '$d/cwd/sub' && '$cogmap' run e.yaml"); want_rc=0
+      want_text="outputs in runs/_"
+      check() { [[ $(find "$d" -name metrics.json | wc -l) -eq 1 && -n $(find "$d/cwd/sub/runs" -name metrics.json) ]]; } ;;
+    duplicate_key)
+      printf 'name: e\nworld: %s/two_rooms.yaml\nduration_s: 5\nduration_s: 600\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:4: duration_s: duplicate key" ;;
+    second_document)
+      printf 'name: e\nworld: %s/two_rooms.yaml\n---\nname: other\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:3: a second YAML document" ;;
+    text_after_document)  # found by scripts/fuzz: yaml-cpp's LoadAll loops for ever on it
+      printf '[1],\n' >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:1: a second YAML document (or text after the end of the first)" ;;
+    seed_minus_one)
+      short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --seed -1 --out "$d/run"); want_rc=2
+      want_text="--seed '-1': expected a whole number" ;;
+    sweep_duplicate_seeds)
+      short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds:\n  - 1\n  - 1\n' >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw"); want_rc=2
+      want_text="s.sweep.yaml:4: seeds[1]: seed 1 is listed twice (also line 3)" ;;
+    sweep_duplicate_values)
+      short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\nvary:\n  mapper.cell_scale_mm: [55, "55"]\n' >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw"); want_rc=2
+      want_text="s.sweep.yaml:4: vary.mapper.cell_scale_mm[1]: value '55' repeats '55'" ;;
+    log_nan_odometry)
+      good_log | sed 's/^F 0.5 0.05/F 0.5 nan/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:6: expected odometry x_m (a finite number), got 'nan'" ;;
+    log_inf_time)
+      good_log | sed 's/^F 0.5 /F inf /' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:6: expected time_s (a finite number), got 'inf'" ;;
+    log_nan_mount)
+      good_log | sed '1s/0.147,0.136,1.5708/nan,0.136,1.5708/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:1: expected sonar x_m (a finite number), got 'nan'" ;;
+    log_jump_1e5)
+      good_log | sed 's/^F 0.5 0.05/F 0.5 1e5/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:6: odometry x_m must be in [-1000, 1000], got 100000" ;;
+    log_jump_50m)
+      good_log | sed 's/^F 0.5 0.05/F 0.5 50/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:6: odometry jumps 49.96 m in 0.1 s (at most 1.15 m at max_speed_mps 0.75)" ;;
+    log_max_range_zero)
+      good_log | sed '1s/sonar_max_range_m=5/sonar_max_range_m=0/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:1: header: sonar_max_range_m must be in [0.05, 50], got 0" ;;
+    log_beam_width_100)
+      good_log | sed '1s/sonar_beam_width_rad=0.5236/sonar_beam_width_rad=100/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:1: header: sonar_beam_width_rad must be in [0.001, 3.14159], got 100" ;;
+    log_min_above_max)
+      good_log | sed '1s/sonar_min_range_m=0.1/sonar_min_range_m=6/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:1: header: sonar_min_range_m must be in [0, 5], got 6" ;;
+    log_time_backwards)
+      good_log | sed 's/^F 0.5 /F 0.05 /' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:6: time goes backwards (0.05 s after 0.4 s)" ;;
+    log_header_only)
+      echo "$H" >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:1: the log has a header but no frames" ;;
+    log_carmen_on_cogmap)
+      good_log >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --format carmen --out "$d/run"); want_rc=2
+      want_text="l.log: no ODOM or SONAR lines: not a CARMEN log" ;;
+    log_dev_zero)
+      cmd=("$cogmap" replay /dev/zero --format cogmap --out "$d/run"); want_rc=2
+      want_text="/dev/zero: not a regular file" ;;
+    replay_name_colon)
+      good_log >"$d/a: b.log"
+      cmd=(bash -c "cd '$d' && '$cogmap' replay 'a: b.log' --no-figures"); want_rc=0
+      want_text="outputs in runs/replay_a__b" ;;
+    replay_name_newline)
+      good_log >"$d/x"$'\n'"mapper: {grid: bayes}.log"
+      cmd=(bash -c "cd '$d' && '$cogmap' replay \"\$(printf 'x\\nmapper: {grid: bayes}.log')\" --no-figures"); want_rc=0
+      want_text="outputs in runs/replay_x_mapper___grid__bayes_"
+      check() { local m; m=$(find "$d/runs" -name metrics.json); [[ -n $m ]] && grep -q '"grid": "mhimm"' "$m"; } ;;
+    stale_temp_files)
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      "$cogmap" run "$d/e.yaml" --out "$d/run" >/dev/null 2>&1
+      touch "$d/run/.grid_066.pgm.tmp-4242-7" "$d/run/asrs/.003.json.tmp-4242-1"
+      mkdir -p "$d/run/figures"; touch "$d/run/figures/.room_001_stages.png.tmp.4242.3"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run" --force); want_rc=0
+      want_text="outputs in $d/run"
+      check() { [[ -z $(find "$d/run" -name '*.tmp[-.]*') ]]; } ;;
+    rerun_run_directory)
+      mkdir -p "$d/cwd"
+      cmd=(bash -c "cd '$d/cwd' && '$cogmap' run '$src/experiments/two_rooms.yaml' --set duration_s=3 --no-figures >/dev/null && '$cogmap' run runs/two_rooms_seed7/experiment.yaml --no-figures && '$cogmap' run runs/two_rooms_seed7/experiment.yaml --out again --no-figures")
+      want_rc=0; want_text="outputs in again"
+      check() { cmp -s "$d/cwd/runs/two_rooms_seed7/trajectory.csv" "$d/cwd/again/trajectory.csv" && [[ -s $d/cwd/runs/two_rooms_seed7_rerun/metrics.json ]]; } ;;
+    locked_directory)
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      "$cogmap" run "$d/e.yaml" --out "$d/run" >/dev/null 2>&1
+      cmd=(flock "$d/run/.cogmap-lock" "$cogmap" run "$d/e.yaml" --out "$d/run" --force); want_rc=2
+      want_text="another cogmap run is writing this directory" ;;
+    drive_handshake_wrong_packets)
+      command -v python3 >/dev/null || { echo "SKIP: no python3"; exit 77; }
+      python3 - "$d/port" <<'PY' &
+import socket, sys, threading, time
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(1)
+open(sys.argv[1], "w").write(str(s.getsockname()[1]))
+c, _ = s.accept(); c.settimeout(0.1)
+end = time.time() + 20
+while time.time() < end:  # a SYNC0 echo every 100 ms, whatever we are sent
+    try:
+        if not c.recv(64): break
+    except socket.timeout: pass
+    except OSError: break
+    try: c.sendall(bytes([0xFA, 0xFB, 3, 0, 0, 0]))
+    except OSError: break
+PY
+      peer=$!
+      for _ in $(seq 50); do [[ -s $d/port ]] && break; sleep 0.1; done
+      cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 3 --out "$d/run"); want_rc=1
+      want_text="P2OS handshake failed: no complete SYNC0-2 exchange"; limit_s=6
+      check() { kill "$peer" 2>/dev/null; return 0; } ;;
+    *) echo "unknown case $what"; exit 2 ;;
+  esac
+}
+
+run_case() {
+  local d=$out/$what
+  rm -rf "$d" && mkdir -p "$d"
+  setup "$d"
+  local start end rc
+  start=$(date +%s%N)
+  text=$(timeout -s KILL $((limit_s + 20)) "${cmd[@]}" 2>&1)
+  rc=$?
+  end=$(date +%s%N)
+  local ms=$(((end - start) / 1000000))
+  seconds=$(printf '%d.%02d' $((ms / 1000)) $((ms % 1000 / 10)))
+  message=$(printf '%s' "$text" | grep -F -- "$want_text" | head -1)
+  [[ -z $message ]] && message=$(printf '%s' "$text" | tail -1)
+  got_rc=$rc
+  if [[ $rc -ne $want_rc ]]; then verdict="exit $rc, expected $want_rc"
+  elif [[ $text != *"$want_text"* ]]; then verdict="output lacks: $want_text"
+  elif ((ms > limit_s * 1000)); then verdict="took ${seconds}s > ${limit_s}s"
+  elif ! check; then verdict="extra check failed"
+  else verdict=ok; fi
+}
+
+case $what in
+  --list) printf '%s\n' "${CASES[@]}" ;;
+  --table)
+    echo "| case | exit | message | time |"
+    echo "|---|---|---|---|"
+    for what in "${CASES[@]}"; do
+      run_case
+      printf '| %s | %s | `%s` | %s s |%s\n' "$what" "$got_rc" "${message//$out\//}" "$seconds" \
+        "$([[ $verdict == ok ]] || echo " FAIL: $verdict")"
+    done ;;
+  *)
+    run_case
+    printf '%s: exit %s in %s s: %s\n' "$what" "$got_rc" "$seconds" "$message"
+    [[ $verdict == ok ]] || { echo "FAIL: $verdict"; printf '%s\n' "$text" | tail -5; exit 1; }
+    ;;
+esac

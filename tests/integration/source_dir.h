@@ -1,0 +1,16 @@
+#pragma once
+/// The repository root, for integration tests that read worlds/ and experiments/: ctest sets
+/// COGMAP_SOURCE_DIR; a test binary run by hand falls back to this header's place in the tree.
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace cogmap::integration {
+
+inline std::filesystem::path source_dir() {
+  const char* src = std::getenv("COGMAP_SOURCE_DIR");
+  return src ? std::filesystem::path(src)
+             : std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
+}
+
+}  // namespace cogmap::integration

@@ -1,0 +1,120 @@
+// Issue 9, "truth stays out of the robot's head": the runner hands the mapper and the
+// controller frames without the true pose, so scrambling the true pose a simulated robot
+// reports changes the truth-based metrics and nothing else, bit for bit.
+#include <gtest/gtest.h>
+
+#include "source_dir.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/runner.h"
+#include "cogmap/sim/sim_robot.h"
+#include "cogmap/sim/world_geometry.h"
+#include "cogmap/sim/world_spec.h"
+
+namespace cogmap::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+using integration::source_dir;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A simulated robot whose frames carry a wrong true pose (shifted 37 m, turned 1 rad).
+class ScrambledTruth final : public mapper::Robot {
+ public:
+  explicit ScrambledTruth(mapper::Robot& inner) : inner_(inner) {}
+  const mapper::RobotGeometry& geometry() const override { return inner_.geometry(); }
+  std::optional<mapper::SensorFrame> next_frame() override {
+    auto f = inner_.next_frame();
+    if (f && f->true_pose) {
+      f->true_pose = mapper::Pose2{f->true_pose->x_m + 37.0, f->true_pose->y_m - 11.0,
+                                   mapper::wrap_angle_rad(f->true_pose->theta_rad + 1.0)};
+    }
+    return f;
+  }
+  void command(const mapper::VelocityCommand& cmd) override { inner_.command(cmd); }
+  void stop() override { inner_.stop(); }
+
+ private:
+  mapper::Robot& inner_;
+};
+
+/// Runs two_rooms for 60 s steering by `pose`; `scramble` wraps the robot.
+fs::path run(bool scramble, const std::string& pose = "estimate") {
+  const Experiment e =
+      load_experiment(source_dir() / "experiments" / "two_rooms.yaml",
+                      {"controller.pose=" + pose, "duration_s=60", "output.figures=false"});
+  sim::WorldSpec world = sim::load_world(e.world);
+  sim::SimRobot sim(world, sim::parse_sim_robot_options(*e.robot), e.seed);
+  ScrambledTruth scrambled(sim);
+  const GroundTruth truth{sim::true_surfaces(world), world.start};
+  RunOptions o;
+  o.out_dir =
+      fs::path(::testing::TempDir()) / ((scramble ? "truth_scrambled_" : "truth_plain_") + pose);
+  o.figures = false;
+  fs::remove_all(o.out_dir);
+  if (scramble) {
+    (void)run_robot_session(scrambled, e, &truth, o);
+  } else {
+    (void)run_robot_session(sim, e, &truth, o);
+  }
+  return o.out_dir;
+}
+
+/// trajectory.csv without its three true-pose columns.
+std::string robot_columns(const std::string& csv) {
+  std::stringstream in(csv), out;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::string f;
+    for (int i = 0; std::getline(fields, f, ','); ++i) {
+      if (i < 1 || i > 3) out << f << ',';
+    }
+    out << '\n';
+  }
+  return out.str();
+}
+
+TEST(TruthBlind, ScramblingTheTruePoseChangesOnlyTruthMetrics) {
+  const fs::path a = run(false), b = run(true);
+  for (const char* f : {"map_segments.csv", "map_segments_odom.csv", "asr_graph.json"}) {
+    EXPECT_EQ(read(a / f), read(b / f)) << f;
+  }
+  for (const auto& e : fs::directory_iterator(a / "asrs")) {
+    EXPECT_EQ(read(e.path()), read(b / "asrs" / e.path().filename())) << e.path();
+  }
+  EXPECT_EQ(robot_columns(read(a / "trajectory.csv")), robot_columns(read(b / "trajectory.csv")));
+  EXPECT_NE(read(a / "trajectory.csv"), read(b / "trajectory.csv"));  // the truth did differ
+  auto ma = nlohmann::json::parse(read(a / "metrics.json"));
+  auto mb = nlohmann::json::parse(read(b / "metrics.json"));
+  for (auto* m : {&ma, &mb}) {
+    for (const char* k : {"map", "map_odometry", "localization", "timing"}) m->erase(k);
+    (*m)["nav"].erase("contacts");
+    (*m)["nav"].erase("contact_s");
+  }
+  EXPECT_EQ(ma.dump(), mb.dump());
+  EXPECT_GT(ma["nav"]["distance_m"].get<double>(), 5.0);  // it did drive
+}
+
+TEST(TruthBlind, TheTestSeesALeak) {
+  // The diagnostic truth controller does read the true pose: there the same scrambling must
+  // change the robot's path and so its map (else the test above could not see a leak).
+  const fs::path a = run(false, "truth"), b = run(true, "truth");
+  EXPECT_NE(read(a / "map_segments_odom.csv"), read(b / "map_segments_odom.csv"));
+}
+
+}  // namespace
+}  // namespace cogmap::experiments
