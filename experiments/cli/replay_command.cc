@@ -10,12 +10,11 @@
 #include <memory>
 
 #include "cogmap/experiments/experiment_config.h"
+#include "cogmap/experiments/recording.h"
 #include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/runner.h"
 #include "cogmap/hw/bag_import.h"
 #include "cogmap/hw/log_import.h"
-#include "cogmap/hw/log_robot.h"
-#include "cogmap/mapper/seam/fake_robot.h"
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
 #include "command_registry.h"
@@ -35,14 +34,6 @@ struct ReplayArgs {
   hw::BagImportOptions bag;  ///< --sonar-topic, --odom-topic, --robot (ROS bags only)
 };
 
-// A ROS bag becomes frames in memory like the other foreign logs (hw/bag_import.h).
-std::unique_ptr<mapper::Robot> bag_robot(const ReplayArgs& args, double& last_time_s) {
-  hw::ImportedBag imported = hw::import_ros_bag(args.log, args.bag);
-  std::cerr << "cogmap replay: " << hw::format_bag_stats(imported.stats) << "\n";
-  if (!imported.log.frames.empty()) last_time_s = imported.log.frames.back().time_s;
-  return std::make_unique<mapper::FakeRobot>(imported.log.geometry, std::move(imported.log.frames));
-}
-
 // Without --experiment: a minimal document, so --set and the mapper defaults work as in files.
 // The name (from the log's file name, which may hold any byte) is set after parsing, never
 // pasted into YAML text: a name with ": " or a newline must not become keys.
@@ -61,48 +52,19 @@ experiments::Experiment default_experiment(const std::string& name,
 }
 
 int replay(const ReplayArgs& args) {
-  // The robot: a cogmap log streams; foreign logs are imported into memory.
-  std::unique_ptr<mapper::Robot> robot;
-  hw::LogRobot* cogmap_log = nullptr;
-  double last_time_s = 0.0;
+  // The robot: a cogmap log streams; foreign logs and bags are imported into memory.
+  experiments::Recording recording;
   try {
-    const bool bag =
-        args.format == "rosbag" || (args.format == "auto" && hw::looks_like_ros_bag(args.log));
-    if (!bag &&
-        !(args.bag.robot.empty() && args.bag.sonar_topic.empty() && args.bag.odom_topic.empty())) {
-      throw hw::LogError(args.log +
-                         ": --robot, --sonar-topic and --odom-topic apply to ROS bags only");
-    }
-    if (bag) {
-      robot = bag_robot(args, last_time_s);
-    } else {
-      hw::LogFormat format;
-      if (args.format == "auto") {
-        format = hw::detect_log_format(args.log);
-      } else {
-        format = args.format == "cogmap"   ? hw::LogFormat::kCogmap
-                 : args.format == "carmen" ? hw::LogFormat::kCarmen
-                                           : hw::LogFormat::kPlayer;
-      }
-      if (format == hw::LogFormat::kCogmap) {
-        auto log = std::make_unique<hw::LogRobot>(args.log);
-        cogmap_log = log.get();
-        last_time_s = log->last_time_s();
-        robot = std::move(log);
-      } else {
-        hw::ImportedLog imported = format == hw::LogFormat::kCarmen
-                                       ? hw::import_carmen_log(args.log)
-                                       : hw::import_player_log(args.log);
-        if (!imported.frames.empty()) last_time_s = imported.frames.back().time_s;
-        std::cerr << "cogmap replay: imported " << imported.frames.size() << " frames ("
-                  << imported.ignored_lines << " other lines skipped)\n";
-        robot = std::make_unique<mapper::FakeRobot>(imported.geometry, std::move(imported.frames));
-      }
-    }
+    recording = experiments::open_recording(args.log, {args.format, args.bag});
   } catch (const hw::LogError& e) {
     std::cerr << "cogmap replay: " << e.what() << "\n";
     return kExitBadInput;
   }
+  if (!recording.description.empty()) {
+    std::cerr << "cogmap replay: " << recording.description << "\n";
+  }
+  mapper::Robot& robot = *recording.robot;
+  const double last_time_s = recording.last_time_s;
 
   experiments::Experiment experiment;
   std::unique_ptr<experiments::GroundTruth> truth;
@@ -118,7 +80,7 @@ int replay(const ReplayArgs& args) {
       if (experiment.start) world.start = *experiment.start;
       // Without ground truth the odometry frame is placed like `cogmap drive` places it.
       if (experiment.start) options.start_pose = *experiment.start;
-      if (cogmap_log && cogmap_log->has_true_poses()) {
+      if (recording.has_true_poses) {
         truth = std::make_unique<experiments::GroundTruth>(
             experiments::GroundTruth{sim::true_surfaces(world), world.start});
       }
@@ -127,7 +89,7 @@ int replay(const ReplayArgs& args) {
     std::cerr << "cogmap replay: " << e.what() << "\n";
     return kExitBadInput;
   }
-  if (cogmap_log && cogmap_log->has_true_poses() && !truth) {
+  if (recording.has_true_poses && !truth) {
     std::cerr << "cogmap replay: the log carries true poses but no --experiment names their "
                  "world: map metrics are omitted\n";
   }
@@ -146,7 +108,7 @@ int replay(const ReplayArgs& args) {
   }
   if (args.no_figures) options.figures = false;
   try {
-    const auto summary = experiments::run_robot_session(*robot, experiment, truth.get(), options);
+    const auto summary = experiments::run_robot_session(robot, experiment, truth.get(), options);
     std::cout << "cogmap replay: " << args.log << ": " << summary.metrics.asr_count
               << " rooms, outputs in " << summary.out_dir.string() << "\n";
     return kExitOk;

@@ -149,6 +149,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "door_close_side_m",
                      "min_room_travel_m",
                      "min_room_duration_s",
+                     "max_room_extent_m",
                      "max_correction_deg",
                      "no_echo_clear_m",
                      "hit_increment",
@@ -212,6 +213,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.doorway.min_room_travel_m =
       number_in(block, "min_room_travel_m", 0.0, 1000.0, o.doorway.min_room_travel_m);
   o.min_room_duration_s = number_in(block, "min_room_duration_s", 0.0, 1e6, o.min_room_duration_s);
+  o.max_room_extent_m = number_in(block, "max_room_extent_m", 1.0, 2000.0, o.max_room_extent_m);
   o.localizer.odometry_prior = block.get_or<bool>("em_odometry_prior", o.localizer.odometry_prior);
   o.localizer.drift.per_rad_turned =
       number_in(block, "em_drift_per_rad", 0.0, 1.0, o.localizer.drift.per_rad_turned);

@@ -15,11 +15,19 @@ Recording open_recording(const std::filesystem::path& path, const RecordingOptio
                                 "' (auto, cogmap, carmen, player, rosbag)");
   }
   Recording out;
-  if (f == "rosbag" || (f == "auto" && hw::looks_like_ros_bag(path))) {
-    hw::ImportedBag bag = hw::import_ros_bag(path, options.bag);
+  const bool bag = f == "rosbag" || (f == "auto" && hw::looks_like_ros_bag(path));
+  const hw::BagImportOptions& b = options.bag;
+  if (!bag && !(b.robot.empty() && b.sonar_topic.empty() && b.odom_topic.empty())) {
+    throw hw::LogError(path.string() +
+                       ": --robot, --sonar-topic and --odom-topic apply to ROS bags only");
+  }
+  if (bag) {
+    hw::ImportedBag imported = hw::import_ros_bag(path, b);
     out.format = "rosbag";
-    out.description = hw::format_bag_stats(bag.stats);
-    out.robot = std::make_unique<mapper::FakeRobot>(bag.log.geometry, std::move(bag.log.frames));
+    out.description = hw::format_bag_stats(imported.stats);
+    if (!imported.log.frames.empty()) out.last_time_s = imported.log.frames.back().time_s;
+    out.robot =
+        std::make_unique<mapper::FakeRobot>(imported.log.geometry, std::move(imported.log.frames));
     return out;
   }
   hw::LogFormat format = hw::LogFormat::kCogmap;
@@ -31,8 +39,11 @@ Recording open_recording(const std::filesystem::path& path, const RecordingOptio
     format = hw::LogFormat::kPlayer;
   }
   if (format == hw::LogFormat::kCogmap) {
+    auto log = std::make_unique<hw::LogRobot>(path);
     out.format = "cogmap";
-    out.robot = std::make_unique<hw::LogRobot>(path);
+    out.last_time_s = log->last_time_s();
+    out.has_true_poses = log->has_true_poses();
+    out.robot = std::move(log);
     return out;
   }
   hw::ImportedLog imported =
@@ -40,6 +51,7 @@ Recording open_recording(const std::filesystem::path& path, const RecordingOptio
   out.format = format == hw::LogFormat::kCarmen ? "carmen" : "player";
   out.description = "imported " + std::to_string(imported.frames.size()) + " frames (" +
                     std::to_string(imported.ignored_lines) + " other lines skipped)";
+  if (!imported.frames.empty()) out.last_time_s = imported.frames.back().time_s;
   out.robot = std::make_unique<mapper::FakeRobot>(imported.geometry, std::move(imported.frames));
   return out;
 }

@@ -70,6 +70,7 @@ struct Mapper::Impl {
   std::optional<Pose2> last_estimate;
   double last_time_s = 0.0;
   bool started = false;
+  Point2 room_lo{0.0, 0.0}, room_hi{0.0, 0.0};  // bounding box of the path in the current room
   int next_id = 0;
 
   Impl(const MapperOptions& opts, const RobotGeometry& geometry, AsrStore& asr_store,
@@ -220,13 +221,19 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
     // Room 0 is entered at the known start pose.
     m.room.start(m.next_id++, frame.time_s, pose, Exit{pose.translation(), 0.0, pose.theta_rad, {}},
                  std::nullopt);
+    m.room_lo = m.room_hi = pose.translation();
     m.started = true;
   }
   m.room.visit(pose);
   m.integrate(frame, pose);
+  m.room_lo = m.room_lo.cwiseMin(pose.translation());
+  m.room_hi = m.room_hi.cwiseMax(pose.translation());
 
   std::optional<int> finished;
-  const std::optional<BoundaryEvent> event = m.boundary->update(frame, pose);
+  std::optional<BoundaryEvent> event = m.boundary->update(frame, pose);
+  if (!event && (m.room_hi - m.room_lo).maxCoeff() > m.options.max_room_extent_m) {
+    event = BoundaryEvent{frame.time_s, pose.translation(), 0.0, pose.theta_rad};
+  }
   if (event && frame.time_s - m.room.start_time_s() >= m.options.min_room_duration_s) {
     finished = m.finish_room(frame.time_s, event);
     // The finished room's correction applies from now on: re-express pose and exit.
@@ -237,6 +244,7 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
                      wrap_angle_rad(event->heading_rad + fix.theta_rad),
                      {}};
     m.room.start(m.next_id++, frame.time_s, pose, entry, finished);
+    m.room_lo = m.room_hi = pose.translation();
   }
   m.last_estimate = pose;
   m.last_time_s = frame.time_s;

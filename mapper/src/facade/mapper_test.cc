@@ -165,5 +165,28 @@ TEST(Mapper, DistanceBoundariesSplitACorridorAndEmUndoesHeadingDrift) {
   EXPECT_LT(median_wall_error(map_em, walls), median_wall_error(map_odometry, walls));
 }
 
+TEST(Mapper, ARoomLargerThanTheExtentLimitEnds) {
+  const RobotGeometry robot = p2at_geometry();
+  // A doorway-less 22 m corridor: the doorway detector never fires, so only the extent limit
+  // can end a room. With a 6 m limit the path is cut at x = 6, 12 and 18 (the first pose
+  // past each 6 m span): four rooms, and no grid ever spans more than 6 m of path + sonar range.
+  const std::vector<Segment> walls{{{-1.0, -1.2}, {25.0, -1.2}}, {{-1.0, 1.2}, {25.0, 1.2}}};
+  const auto frames = drive({{0.0, 0.0}, {22.0, 0.0}}, walls, robot, 0.0);
+  auto rooms = [&](double limit_m, std::size_t* peak_grid_bytes) {
+    MapperOptions options;
+    options.max_room_extent_m = limit_m;
+    MemoryAsrStore store;
+    Mapper mapper(options, robot, store, Pose2{});
+    for (const SensorFrame& f : frames) mapper.process(f);
+    mapper.finish();
+    *peak_grid_bytes = mapper.stats().peak_grid_bytes;
+    return store.ids().size();
+  };
+  std::size_t small_peak = 0, default_peak = 0;
+  EXPECT_EQ(rooms(6.0, &small_peak), 4u);
+  EXPECT_EQ(rooms(MapperOptions{}.max_room_extent_m, &default_peak), 1u);
+  EXPECT_LT(small_peak, default_peak);
+}
+
 }  // namespace
 }  // namespace cogmap::mapper

@@ -22,12 +22,15 @@ struct RecordingOptions {
 /// The opened recording.
 struct Recording {
   std::unique_ptr<mapper::Robot> robot;
-  std::string format;       ///< the format it was read as
-  std::string description;  ///< one line for the user: frames imported, bag statistics
+  std::string format;           ///< the format it was read as
+  std::string description;      ///< one line for the user: frames imported, bag statistics
+  double last_time_s = 0.0;     ///< time of the last frame, seconds (0 for none)
+  bool has_true_poses = false;  ///< a cogmap log of a simulated run carries ground truth
 };
 
 /// Opens `path`. Throws hw::LogError ("FILE:LINE: ..." or "FILE: topic T, message K: ...") for a
-/// file that cannot be read in the chosen format, std::invalid_argument for an unknown format.
+/// file that cannot be read in the chosen format or bag options given for a file that is not a
+/// bag, std::invalid_argument for an unknown format.
 Recording open_recording(const std::filesystem::path& path, const RecordingOptions& options = {});
 
 }  // namespace cogmap::experiments
