@@ -24,12 +24,7 @@ namespace fs = std::filesystem;
 
 using integration::source_dir;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using integration::read_file;
 
 /// A simulated robot whose frames carry a wrong true pose (shifted 37 m, turned 1 rad).
 class ScrambledTruth final : public mapper::Robot {
@@ -91,15 +86,17 @@ std::string robot_columns(const std::string& csv) {
 TEST(TruthBlind, ScramblingTheTruePoseChangesOnlyTruthMetrics) {
   const fs::path a = run(false), b = run(true);
   for (const char* f : {"map_segments.csv", "map_segments_odom.csv", "asr_graph.json"}) {
-    EXPECT_EQ(read(a / f), read(b / f)) << f;
+    EXPECT_EQ(read_file(a / f), read_file(b / f)) << f;
   }
   for (const auto& e : fs::directory_iterator(a / "asrs")) {
-    EXPECT_EQ(read(e.path()), read(b / "asrs" / e.path().filename())) << e.path();
+    EXPECT_EQ(read_file(e.path()), read_file(b / "asrs" / e.path().filename())) << e.path();
   }
-  EXPECT_EQ(robot_columns(read(a / "trajectory.csv")), robot_columns(read(b / "trajectory.csv")));
-  EXPECT_NE(read(a / "trajectory.csv"), read(b / "trajectory.csv"));  // the truth did differ
-  auto ma = nlohmann::json::parse(read(a / "metrics.json"));
-  auto mb = nlohmann::json::parse(read(b / "metrics.json"));
+  EXPECT_EQ(robot_columns(read_file(a / "trajectory.csv")),
+            robot_columns(read_file(b / "trajectory.csv")));
+  EXPECT_NE(read_file(a / "trajectory.csv"),
+            read_file(b / "trajectory.csv"));  // the truth did differ
+  auto ma = nlohmann::json::parse(read_file(a / "metrics.json"));
+  auto mb = nlohmann::json::parse(read_file(b / "metrics.json"));
   for (auto* m : {&ma, &mb}) {
     for (const char* k : {"map", "map_odometry", "localization", "timing"}) m->erase(k);
     (*m)["nav"].erase("contacts");
@@ -113,7 +110,7 @@ TEST(TruthBlind, TheTestSeesALeak) {
   // The diagnostic truth controller does read the true pose: there the same scrambling must
   // change the robot's path and so its map (else the test above could not see a leak).
   const fs::path a = run(false, "truth"), b = run(true, "truth");
-  EXPECT_NE(read(a / "map_segments_odom.csv"), read(b / "map_segments_odom.csv"));
+  EXPECT_NE(read_file(a / "map_segments_odom.csv"), read_file(b / "map_segments_odom.csv"));
 }
 
 }  // namespace

@@ -20,12 +20,7 @@ using Json = nlohmann::json;
 
 using integration::source_dir;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using integration::read_file;
 
 Json run_once(const std::string& name) {
   const Experiment e = load_experiment(source_dir() / "experiments" / "two_rooms.yaml");
@@ -34,7 +29,7 @@ Json run_once(const std::string& name) {
   o.figures = false;
   fs::remove_all(o.out_dir);
   (void)run_experiment(e, o);
-  return Json::parse(read(o.out_dir / "metrics.json"));
+  return Json::parse(read_file(o.out_dir / "metrics.json"));
 }
 
 TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
@@ -71,8 +66,8 @@ TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
     EXPECT_EQ(a[key].dump(), b[key].dump()) << key;
   }
   const fs::path dir_b = fs::path(::testing::TempDir()) / "two_rooms_b";
-  EXPECT_EQ(read(dir / "trajectory.csv"), read(dir_b / "trajectory.csv"));
-  EXPECT_EQ(read(dir / "map_segments.csv"), read(dir_b / "map_segments.csv"));
+  EXPECT_EQ(read_file(dir / "trajectory.csv"), read_file(dir_b / "trajectory.csv"));
+  EXPECT_EQ(read_file(dir / "map_segments.csv"), read_file(dir_b / "map_segments.csv"));
 }
 
 }  // namespace

@@ -69,10 +69,6 @@ std::optional<RayHit> first_hit(const SonarScene& scene, const Point2& origin, c
   return best;
 }
 
-double incidence_rad(const Point2& dir, const Point2& normal) {
-  return std::acos(std::min(1.0, std::abs(dir.dot(normal))));
-}
-
 Point2 reflect(const Point2& dir, const Point2& normal) {
   return dir - 2.0 * dir.dot(normal) * normal;
 }
@@ -90,8 +86,8 @@ double beam_pattern(double offset_rad, double sigma_rad) {
 }
 
 // Expected detections of one ray's share (width dphi_rad) of a surface hit at incidence
-// `incidence_rad` after a path whose one-way length is range_m: the mirror lobe (normalised so
-// that the rays across it add up to specular_strength) plus the diffuse backscatter.
+// incidence acos(cos_incidence) after a path whose one-way length is range_m: the mirror lobe
+// (normalised so that the rays across it add up to specular_strength) plus the diffuse backscatter.
 // x^e with the exponents the defaults use done exactly and cheaply (pow is ~5 % of a ping).
 double power(double x, double e) {
   if (e == 0.0) return 1.0;

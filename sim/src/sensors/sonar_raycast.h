@@ -27,9 +27,6 @@ std::optional<RayHit> first_hit(const SonarScene& scene, const mapper::Point2& o
                                 const mapper::Point2& dir, double max_t_m, int skip_surface = -1,
                                 const SceneIndex* index = nullptr);
 
-/// Angle between a unit ray direction and a unit surface normal, folded to [0, π/2], radians.
-double incidence_rad(const mapper::Point2& dir, const mapper::Point2& normal);
-
 /// The mirror image of `dir` about a surface with unit `normal`.
 mapper::Point2 reflect(const mapper::Point2& dir, const mapper::Point2& normal);
 
