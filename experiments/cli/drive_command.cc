@@ -18,6 +18,7 @@
 #include "cogmap/hw/fd_stream.h"
 #include "cogmap/hw/log_robot.h"
 #include "cogmap/hw/p2os_robot.h"
+#include "cogmap/render/renderer.h"
 #include "command_registry.h"
 
 namespace cogmap::cli {
@@ -182,6 +183,9 @@ int drive(const DriveArgs& args) {
         experiments::run_robot_session(interruptible, experiment, nullptr, options);
     std::cout << "cogmap drive: " << summary.metrics.asr_count << " rooms, outputs in "
               << summary.out_dir.string() << "\n";
+  } catch (const render::RendererUnavailable& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";  // before the robot moves
+    code = kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "cogmap drive: " << e.what() << "\n";
     code = kExitFailed;

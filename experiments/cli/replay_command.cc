@@ -15,6 +15,7 @@
 #include "cogmap/experiments/runner.h"
 #include "cogmap/hw/bag_import.h"
 #include "cogmap/hw/log_import.h"
+#include "cogmap/render/renderer.h"
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
 #include "command_registry.h"
@@ -114,6 +115,9 @@ int replay(const ReplayArgs& args) {
     return kExitOk;
   } catch (const experiments::RunDirectoryError& e) {
     std::cerr << "cogmap replay: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const render::RendererUnavailable& e) {
+    std::cerr << "cogmap replay: " << e.what() << "\n";  // before any frame is replayed
     return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "cogmap replay: " << e.what() << "\n";

@@ -11,6 +11,7 @@
 #include "cogmap/experiments/progress.h"
 #include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/runner.h"
+#include "cogmap/render/renderer.h"
 #include "command_registry.h"
 
 namespace cogmap::cli {
@@ -26,6 +27,7 @@ struct RunArgs {
   std::vector<std::string> sets;
   bool no_figures = false;
   bool force = false;
+  bool fsync = false;
 };
 
 std::string opt_text(const std::optional<double>& v) { return v ? format_double(*v) : "n/a"; }
@@ -104,6 +106,10 @@ int run(const RunArgs& args) {
   experiments::RunOptions options;
   options.out_dir = out;
   if (args.no_figures) options.figures = false;
+  // A simulated run is redone bit for bit from its seed: fsyncing every file buys nothing a
+  // rerun does not (docs/performance.md "Durability"), unless asked for.
+  options.durability =
+      args.fsync ? mapper::io::Durability::kSynced : mapper::io::Durability::kAtomic;
   experiments::ProgressBar bar(experiments::ProgressBar::stderr_is_terminal());
   options.on_progress = [&bar](double t_s, double duration_s) {
     bar.update(t_s / duration_s, "t = " + std::to_string(static_cast<long>(t_s)) + " s");
@@ -120,6 +126,10 @@ int run(const RunArgs& args) {
     std::cerr << "cogmap run: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const experiments::RunDirectoryError& e) {
+    bar.finish();
+    std::cerr << "cogmap run: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const render::RendererUnavailable& e) {
     bar.finish();
     std::cerr << "cogmap run: " << e.what() << "\n";
     return kExitBadInput;
@@ -145,6 +155,8 @@ const CommandRegistrar kRegistrar{
           ->allow_extra_args(false);
       sub->add_flag("--no-figures", args->no_figures, "skip the PNG figures (faster)");
       sub->add_flag("--force", args->force, "replace a finished run in --out");
+      sub->add_flag("--fsync", args->fsync,
+                    "fsync every room and result file as it is written (survives a power cut)");
       sub->callback([&exit_code, args] { exit_code = run(*args); });
     }};
 

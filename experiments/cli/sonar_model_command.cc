@@ -12,6 +12,7 @@
 
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/render/figures.h"
+#include "cogmap/render/renderer.h"
 #include "cogmap/sim/sonar_model.h"
 #include "cogmap/sim/world_spec.h"
 #include "command_registry.h"
@@ -63,6 +64,12 @@ int sonar_model(const SonarModelArgs& args) {
   try {
     if (!args.world.empty()) materials = sim::load_world(args.world).materials;
   } catch (const std::exception& e) {
+    std::cerr << "cogmap sonar-model: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  try {
+    render::require_renderer();  // before any work: the two plots need it
+  } catch (const render::RendererUnavailable& e) {
     std::cerr << "cogmap sonar-model: " << e.what() << "\n";
     return kExitBadInput;
   }

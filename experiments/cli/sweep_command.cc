@@ -11,6 +11,7 @@
 #include "cogmap/experiments/sweep_plots.h"
 #include "cogmap/experiments/sweep_runner.h"
 #include "cogmap/mapper/io/asr_json.h"
+#include "cogmap/render/renderer.h"
 #include "command_registry.h"
 
 namespace cogmap::cli {
@@ -25,6 +26,7 @@ struct SweepArgs {
   std::string out;
   bool merge = false;
   bool no_figures = false;
+  bool fsync = false;
   bool no_plots = false;
   std::size_t max_runs = experiments::SweepLimits{}.max_runs;
 };
@@ -37,10 +39,16 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
-void plot(const experiments::ResultsTable& table, const fs::path& out, bool enabled) {
+// --jobs N, or one per core when it is 0.
+unsigned job_count(unsigned jobs) {
+  return jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
+}
+
+void plot(const experiments::ResultsTable& table, const fs::path& out, bool enabled,
+          unsigned jobs) {
   if (!enabled) return;
   try {
-    const auto files = experiments::write_sweep_plots(table, out / "plots");
+    const auto files = experiments::write_sweep_plots(table, out / "plots", jobs);
     if (!files.empty()) std::cout << "plots in " << (out / "plots").string() << "\n";
   } catch (const std::exception& e) {
     // The results are safe on disk already; a missing plot is worth a warning, not a failure.
@@ -61,7 +69,7 @@ int merge(const SweepArgs& args) {
     mapper::io::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
     std::cout << "cogmap sweep: merged " << tables.size() << " files, " << merged.rows.size()
               << " runs into " << (out / "results.csv").string() << "\n";
-    plot(merged, out, !args.no_plots);
+    plot(merged, out, !args.no_plots, job_count(args.jobs));
     return kExitOk;
   } catch (const std::exception& e) {
     std::cerr << "cogmap sweep --merge: " << e.what() << "\n";
@@ -87,7 +95,7 @@ int sweep(const SweepArgs& args) {
     spec = experiments::load_sweep(args.inputs.front(), {args.max_runs});
     options.out_dir = args.out.empty() ? fs::path("sweeps") / fs::path(spec.file).stem().stem()
                                        : fs::path(args.out);
-    options.jobs = args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
+    options.jobs = job_count(args.jobs);
     options.progress = experiments::ProgressBar::stderr_is_terminal();
     planned = experiments::plan_sweep(spec, options);
     if (!planned.empty()) experiments::validate_experiment(planned.front().experiment);
@@ -96,11 +104,35 @@ int sweep(const SweepArgs& args) {
     return kExitBadInput;
   }
   const bool no_figures = args.no_figures;
+  // Simulated runs are redone from their seeds: no fsync per file unless asked for
+  // (docs/performance.md "Durability").
+  const auto durability =
+      args.fsync ? mapper::io::Durability::kSynced : mapper::io::Durability::kAtomic;
+  const bool runs_draw = !no_figures && !planned.empty() && planned.front().experiment.figures;
+  try {
+    // Runs that draw figures need the renderer plugin: fail once, before any run starts.
+    if (runs_draw) render::require_renderer();
+  } catch (const render::RendererUnavailable& e) {
+    std::cerr << "cogmap sweep: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  // Only the plots need it: load it (~0.3 s, LLVM's relocations and llvmpipe's start) while the
+  // runs go rather than after them. A failure here shows again, as a warning, when plotting.
+  std::jthread preload;
+  if (!runs_draw && !args.no_plots && options.shard.n == 1) {
+    preload = std::jthread([] {
+      try {
+        render::require_renderer();
+      } catch (const std::exception&) {
+      }
+    });
+  }
   try {
     const auto outcome = experiments::run_sweep(
-        spec, planned, options, [no_figures](const experiments::PlannedRun& p) {
+        spec, planned, options, [no_figures, durability](const experiments::PlannedRun& p) {
           experiments::RunOptions run_options;
           run_options.out_dir = p.dir;
+          run_options.durability = durability;
           if (no_figures) run_options.figures = false;
           (void)experiments::run_experiment(p.experiment, run_options);
         });
@@ -109,7 +141,8 @@ int sweep(const SweepArgs& args) {
               << " already finished, " << outcome.failures.size() << " failed\n"
               << "results in " << outcome.results_csv.string() << "\n";
     for (const auto& f : outcome.failures) std::cerr << "cogmap sweep: failed: " << f << "\n";
-    if (options.shard.n == 1) plot(outcome.results, options.out_dir, !args.no_plots);
+    if (preload.joinable()) preload.join();
+    if (options.shard.n == 1) plot(outcome.results, options.out_dir, !args.no_plots, options.jobs);
     return outcome.failures.empty() ? kExitOk : kExitFailed;
   } catch (const std::exception& e) {
     std::cerr << "cogmap sweep: " << e.what() << "\n";
@@ -134,6 +167,8 @@ const CommandRegistrar kRegistrar{
       sub->add_flag("--merge", args->merge, "join results files of shard outputs");
       sub->add_flag("--no-figures", args->no_figures, "skip each run's PNG figures");
       sub->add_flag("--no-plots", args->no_plots, "skip the per-metric plots");
+      sub->add_flag("--fsync", args->fsync,
+                    "fsync every room and result file as it is written (survives a power cut)");
       sub->add_option("--max-runs", args->max_runs,
                       "refuse sweeps with more runs than this (default 10000)")
           ->check(CLI::PositiveNumber);

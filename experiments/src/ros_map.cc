@@ -39,10 +39,12 @@ std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string
 }
 
 void write_ros_map(const mapper::HistogramGrid& grid, double occupied_threshold,
-                   const std::filesystem::path& dir, const std::string& stem) {
-  mapper::io::write_file_atomic(dir / (stem + ".pgm"), histogram_to_pgm(grid, occupied_threshold));
+                   const std::filesystem::path& dir, const std::string& stem,
+                   mapper::io::Durability durability) {
+  mapper::io::write_file_atomic(dir / (stem + ".pgm"), histogram_to_pgm(grid, occupied_threshold),
+                                durability);
   mapper::io::write_file_atomic(dir / (stem + ".yaml"),
-                                ros_map_yaml(grid.geometry(), stem + ".pgm"));
+                                ros_map_yaml(grid.geometry(), stem + ".pgm"), durability);
 }
 
 }  // namespace cogmap::experiments

@@ -116,16 +116,18 @@ std::string run_experiment_yaml(const Experiment& experiment, const fs::path& di
   return std::string(emitter.c_str()) + "\n";
 }
 
-void prepare_run_directory(const fs::path& dir, const Experiment& experiment) {
+void prepare_run_directory(const fs::path& dir, const Experiment& experiment,
+                           mapper::io::Durability durability) {
   std::vector<fs::path> inputs{experiment.file};
   check_run_directory(dir, inputs);
   mapper::io::write_file_atomic(dir / kRunMarkerName,
-                                "cogmap run directory (docs/reliability.md)\n");
+                                "cogmap run directory (docs/reliability.md)\n", durability);
   for (const fs::path& d : {dir, dir / "asrs", dir / "figures"}) {
     mapper::io::remove_stale_temp_files(d);
   }
   clear_run_outputs(dir);
-  mapper::io::write_file_atomic(dir / "experiment.yaml", run_experiment_yaml(experiment, dir));
+  mapper::io::write_file_atomic(dir / "experiment.yaml", run_experiment_yaml(experiment, dir),
+                                durability);
 }
 
 }  // namespace cogmap::experiments

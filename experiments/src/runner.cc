@@ -16,6 +16,7 @@
 #include "cogmap/mapper/mapper.h"
 #include "cogmap/mapper/nav/controller.h"
 #include "cogmap/render/figures.h"
+#include "cogmap/render/renderer.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -138,12 +139,14 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   const fs::path out = options.out_dir;
   const bool want_figures = options.figures.value_or(experiment.figures);
   const bool figures = want_figures;
+  // The renderer is a plugin: a run that cannot draw its figures stops before it writes anything.
+  if (figures) render::require_renderer();
   // Held to the end of the session: no second writer (thread or process) enters `out`.
   std::optional<RunDirectoryLock> lock;
   try {
     check_run_directory(out, {experiment.file});  // before the lock file is created in it
     lock.emplace(out);
-    prepare_run_directory(out, experiment);
+    prepare_run_directory(out, experiment, options.durability);
   } catch (const RunDirectoryError&) {
     throw;
   } catch (const std::exception& e) {
@@ -155,13 +158,14 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
 
   const mapper::RobotGeometry geometry = robot.geometry();
   const mapper::Pose2 start = truth ? truth->start_pose : options.start_pose;
-  mapper::io::DirectoryAsrStore store(out / "asrs");
+  const mapper::io::Durability durability = options.durability;
+  mapper::io::DirectoryAsrStore store(out / "asrs", durability);
   mapper::Mapper mapper(experiment.mapper, geometry, store, start);
   const double occupied_threshold = experiment.mapper.builder.occupied_threshold;
   Clock::duration figure_time{0};
   mapper.set_room_listener([&](const mapper::Asr& asr, const mapper::AsrTrace& trace) {
     const std::string stem = room_stem(asr.id);
-    write_ros_map(trace.raw, occupied_threshold, out, "grid_" + stem);
+    write_ros_map(trace.raw, occupied_threshold, out, "grid_" + stem, durability);
     if (figures) {
       const auto t0 = Clock::now();
       render::write_room_stages_figure(trace, experiment.name + ": room " + std::to_string(asr.id),
@@ -282,13 +286,14 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       add_contacts(m.nav, session.rows, truth->surfaces, geometry);
     }
 
-    mapper::io::write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows));
-    mapper::io::write_file_atomic(out / "map_segments.csv", segments_csv(corrected));
-    mapper::io::write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry));
-    mapper::io::write_asr_graph_json(mapper.graph(), out / "asr_graph.json");
+    mapper::io::write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows), durability);
+    mapper::io::write_file_atomic(out / "map_segments.csv", segments_csv(corrected), durability);
+    mapper::io::write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry),
+                                  durability);
+    mapper::io::write_asr_graph_json(mapper.graph(), out / "asr_graph.json", durability);
     SvgMap svg{corrected, truth ? truth->surfaces : std::vector<mapper::Segment>{},
                subsample_path(est_path, 0.05), labels};
-    mapper::io::write_file_atomic(out / "map.svg", map_svg(svg));
+    mapper::io::write_file_atomic(out / "map.svg", map_svg(svg), durability);
 
     if (figures) {
       render::MapFigure fig;
@@ -308,7 +313,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                                  out / "figures" / "graph.png");
     }
     // Last: its presence marks the run as finished (sweeps skip finished runs).
-    mapper::io::write_file_atomic(out / "metrics.json", metrics_json_text(m));
+    mapper::io::write_file_atomic(out / "metrics.json", metrics_json_text(m), durability);
   } catch (const std::exception& e) {
     throw RunError(std::string("writing the results failed: ") + e.what());
   }

@@ -1,10 +1,13 @@
 #include "cogmap/experiments/sweep_plots.h"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <optional>
+#include <thread>
 
 #include "cogmap/render/figures.h"
 
@@ -99,26 +102,59 @@ std::vector<MetricSeries> metric_series(const ResultsTable& table, const std::st
   return out;
 }
 
-std::vector<std::filesystem::path> write_sweep_plots(const ResultsTable& table,
-                                                     const std::filesystem::path& dir) {
-  std::vector<std::filesystem::path> written;
-  for (const std::string& metric : plotted_metrics()) {
-    std::vector<std::string> categories;
-    const auto series = metric_series(table, metric, &categories);
-    if (series.empty()) continue;
-    std::vector<render::PlotSeries> plot;
-    for (const auto& s : series) plot.push_back({s.label, s.x, s.mean, s.sd});
-    std::string x_label = table.header[1];
-    if (!categories.empty()) {
-      x_label += " (";
-      for (std::size_t i = 0; i < categories.size(); ++i) {
-        x_label += (i ? ", " : "") + std::to_string(i) + "=" + categories[i];
-      }
-      x_label += ")";
+namespace {
+
+// One metric's plot, or nothing when the table has no data for it.
+std::optional<std::filesystem::path> write_metric_plot_png(const ResultsTable& table,
+                                                           const std::string& metric,
+                                                           const std::filesystem::path& dir) {
+  std::vector<std::string> categories;
+  const auto series = metric_series(table, metric, &categories);
+  if (series.empty()) return std::nullopt;
+  std::vector<render::PlotSeries> plot;
+  for (const auto& s : series) plot.push_back({s.label, s.x, s.mean, s.sd});
+  std::string x_label = table.header[1];
+  if (!categories.empty()) {
+    x_label += " (";
+    for (std::size_t i = 0; i < categories.size(); ++i) {
+      x_label += (i ? ", " : "") + std::to_string(i) + "=" + categories[i];
     }
-    const auto png = dir / (metric + ".png");
-    render::write_metric_plot(metric + " vs " + table.header[1], x_label, metric, plot, png);
-    written.push_back(png);
+    x_label += ")";
+  }
+  const auto png = dir / (metric + ".png");
+  render::write_metric_plot(metric + " vs " + table.header[1], x_label, metric, plot, png);
+  return png;
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> write_sweep_plots(const ResultsTable& table,
+                                                     const std::filesystem::path& dir,
+                                                     unsigned jobs) {
+  // Drawing is most of a sweep's serial tail: the plots share out over the sweep's threads.
+  const std::vector<std::string> metrics = plotted_metrics();
+  std::vector<std::optional<std::filesystem::path>> pngs(metrics.size());
+  std::vector<std::exception_ptr> errors(metrics.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next.fetch_add(1); i < metrics.size(); i = next.fetch_add(1)) {
+      try {
+        pngs[i] = write_metric_plot_png(table, metrics[i], dir);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  const unsigned threads_wanted =
+      std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(metrics.size())));
+  std::vector<std::thread> threads;
+  for (unsigned t = 1; t < threads_wanted; ++t) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  std::vector<std::filesystem::path> written;
+  for (std::size_t i = 0; i < metrics.size(); ++i) {
+    if (errors[i]) std::rethrow_exception(errors[i]);
+    if (pngs[i]) written.push_back(*pngs[i]);
   }
   return written;
 }

@@ -260,6 +260,24 @@ TEST(AtomicWrite, LeftoverTempFromACrashDoesNotTouchTheOldFile) {
   expect_bit_exact(sample_asr(1), reopened.load(1));
 }
 
+TEST(AtomicWrite, UnsyncedStoreStillReplacesWholeFilesAndLeavesNoTemp) {
+  // Durability::kAtomic drops only the fsyncs: the rooms read back bit for bit, a second save
+  // replaces the first, and no temporary file is left behind.
+  const fs::path dir = fresh_dir("unsynced");
+  DirectoryAsrStore store(dir, Durability::kAtomic);
+  store.save(sample_asr(1));
+  store.save(sample_asr(1));
+  store.save(sample_asr(2));
+  EXPECT_EQ(store.ids(), (std::vector<int>{1, 2}));
+  expect_bit_exact(sample_asr(2), DirectoryAsrStore(dir).load(2));
+  write_file_atomic(dir / "note.txt", "first", Durability::kAtomic);
+  write_file_atomic(dir / "note.txt", "second", Durability::kAtomic);
+  EXPECT_EQ(read_file(dir / "note.txt"), "second");
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_FALSE(is_temp_file_name(e.path().filename().string())) << e.path();
+  }
+}
+
 TEST(AsrGraphJson, RoundTripAndValidation) {
   AsrGraph g;
   g.add_node({0, {0.1, 0.2, 0.3}, {1.0 / 3.0, 2.0}});

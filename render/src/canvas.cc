@@ -11,11 +11,6 @@
 namespace cogmap::render {
 namespace {
 
-std::mutex& figure_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
 void set_color(Rgb c) { glColor3f(c.r, c.g, c.b); }
 
 // A dash pattern long enough to read as dashed at figure scale but not as dotted.
@@ -38,7 +33,7 @@ void end_lines(bool dashed) {
 }  // namespace
 
 Canvas::Canvas(int width_px, int height_px, const Style& style, Font& font)
-    : lock_(figure_mutex()), width_(width_px), height_(height_px), style_(style), font_(font) {
+    : width_(width_px), height_(height_px), style_(style), font_(font) {
   if (width_px <= 0 || height_px <= 0) throw std::runtime_error("cogmap render: empty canvas");
   buffer_.assign(static_cast<std::size_t>(width_px) * height_px * 4, 0);
   OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);

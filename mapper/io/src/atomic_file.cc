@@ -1,6 +1,6 @@
 // Crash-safe file replacement: temp file in the same directory, fsync, rename, fsync the
 // directory. rename(2) within one file system is atomic, so readers (and a restarted process)
-// see either the old file or the new one.
+// see either the old file or the new one. Durability::kAtomic leaves out the two fsyncs.
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -32,7 +32,9 @@ struct Fd {
 
 }  // namespace
 
-void write_file_atomic(const std::filesystem::path& path, std::string_view content) {
+void write_file_atomic(const std::filesystem::path& path, std::string_view content,
+                       Durability durability) {
+  const bool sync = durability == Durability::kSynced;
   static std::atomic<unsigned long> counter{0};
   const std::filesystem::path dir =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -61,7 +63,7 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
     }
     // The data must be on disk before the name points at it, or a crash could leave a
     // renamed but empty file.
-    if (::fsync(file.fd) != 0) {
+    if (sync && ::fsync(file.fd) != 0) {
       ::unlink(temp.c_str());
       fail_errno(temp, "cannot fsync");
     }
@@ -72,6 +74,7 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
     errno = saved;
     fail_errno(path, "cannot rename temp file over");
   }
+  if (!sync) return;
   // The rename itself lives in the directory: sync it so the new name survives a crash.
   Fd directory{::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
   if (directory.fd < 0) fail_errno(dir, "cannot open directory");

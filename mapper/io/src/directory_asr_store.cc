@@ -30,7 +30,8 @@ int id_of(const std::string& name) {
 
 }  // namespace
 
-DirectoryAsrStore::DirectoryAsrStore(std::filesystem::path dir) : dir_(std::move(dir)) {
+DirectoryAsrStore::DirectoryAsrStore(std::filesystem::path dir, Durability durability)
+    : dir_(std::move(dir)), durability_(durability) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) throw std::runtime_error(dir_.string() + ": cannot create directory: " + ec.message());
@@ -51,7 +52,7 @@ std::filesystem::path DirectoryAsrStore::path_of(int id) const {
 void DirectoryAsrStore::save(const Asr& asr) {
   if (asr.id < 0)
     throw std::invalid_argument("ASR id must be non-negative, got " + std::to_string(asr.id));
-  write_file_atomic(path_of(asr.id), asr_to_json_text(asr));
+  write_file_atomic(path_of(asr.id), asr_to_json_text(asr), durability_);
   ids_.insert(asr.id);
 }
 

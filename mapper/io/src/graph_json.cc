@@ -62,8 +62,9 @@ AsrGraph asr_graph_from_json_text(std::string_view text, const std::string& file
   return graph;
 }
 
-void write_asr_graph_json(const AsrGraph& graph, const std::filesystem::path& path) {
-  write_file_atomic(path, asr_graph_to_json_text(graph));
+void write_asr_graph_json(const AsrGraph& graph, const std::filesystem::path& path,
+                          Durability durability) {
+  write_file_atomic(path, asr_graph_to_json_text(graph), durability);
 }
 
 AsrGraph read_asr_graph_json(const std::filesystem::path& path) {

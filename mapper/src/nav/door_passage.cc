@@ -12,6 +12,47 @@ constexpr double kPi = std::numbers::pi;
 
 double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+/// The principal direction (radians, modulo π) of a point set: the line a total least-squares
+/// fit would draw through it.
+double principal_direction_rad(const std::vector<Point2>& points) {
+  Point2 mean(0.0, 0.0);
+  for (const Point2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  double sxx = 0.0, sxy = 0.0, syy = 0.0;
+  for (const Point2& p : points) {
+    const Point2 d = p - mean;
+    sxx += d.x() * d.x();
+    sxy += d.x() * d.y();
+    syy += d.y() * d.y();
+  }
+  return 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+}
+
+/// The opening's normal from the wall it sits in: the two jamb points alone (0.9-1.2 m
+/// apart, one often on the wall's near face and one on its far face, each with range noise)
+/// tilt it by 5-15°, and a tilted axis leads the crossing into a jamb. The wall points within
+/// wall_fit_m beyond either jamb and near the jamb line give a baseline 2-3 times longer;
+/// their principal direction replaces the jamb line when at least 4 points support it.
+Point2 wall_normal(const std::vector<std::optional<Point2>>& scan, const Point2& center,
+                   const Point2& jamb_normal, double width_m, const DoorOptions& o) {
+  const Point2 along(-jamb_normal.y(), jamb_normal.x());
+  std::vector<Point2> wall;
+  for (const auto& q : scan) {
+    if (!q) continue;
+    const Point2 rel = *q - center;
+    const double lateral = std::abs(rel.dot(along));
+    if (std::abs(rel.dot(jamb_normal)) > o.depth_m) continue;
+    if (lateral < 0.5 * width_m - 0.05 || lateral > 0.5 * width_m + o.wall_fit_m) continue;
+    wall.push_back(rel);
+  }
+  if (o.wall_fit_m <= 0.0 || wall.size() < 4) return jamb_normal;
+  const double angle = principal_direction_rad(wall);
+  Point2 n(-std::sin(angle), std::cos(angle));
+  if (n.dot(jamb_normal) < 0.0) n = -n;
+  // A fit far from the jamb line is some other structure (a corner): keep the jambs' word.
+  return n.dot(jamb_normal) > std::cos(o.max_axis_angle_deg * kPi / 180.0 / 2.0) ? n : jamb_normal;
+}
+
 }  // namespace
 
 std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
@@ -66,6 +107,9 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
       Point2 n(-(b - a).y() / width, (b - a).x() / width);
       if (n.dot(center) < 0.0) n = -n;
       if (n.dot(center) < 0.2) continue;  // seen edge-on or the robot is in it
+      // Crossing it must lead toward the goal: a gap met sideways (two wall ends meeting at
+      // a corner, furniture beside the path) is no door on the way.
+      if (n.dot(g) < std::cos(o.max_axis_angle_deg * kPi / 180.0)) continue;
       // Nothing between them (in bearing) nearer than depth_m beyond their line.
       bool clear = true;
       for (int k = i + 1; k < j && clear; ++k) {
@@ -73,7 +117,11 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
       }
       if (!clear || !supported(a, b) || !supported(b, a)) continue;
       // The goal must be beyond the opening (or about in it: a waypoint at a door centre).
-      if (n.dot(goal_off - center) < -o.approach_m) continue;
+      const double goal_beyond = n.dot(goal_off - center);
+      if (goal_beyond < -o.approach_m) continue;
+      // A goal in the opening (a door-centre waypoint) names the door: only drift separates
+      // them, not the length of a wall.
+      if (goal_beyond < o.approach_m && (goal_off - center).norm() > o.goal_in_door_m) continue;
       const double offset = std::abs(cross(g, center));  // from the goal line
       if (offset > o.max_offset_m) continue;
       const bool known_bad = std::any_of(excluded.begin(), excluded.end(), [&](const Point2& e) {
@@ -83,7 +131,7 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
       const double cost = offset + 0.1 * center.norm();
       if (cost < best_cost) {
         best_cost = cost;
-        best = Opening{robot_m + center, n, width};
+        best = Opening{robot_m + center, wall_normal(scan, center, n, width, o), width};
       }
     }
   }
@@ -103,6 +151,55 @@ bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& rob
     if (std::abs(cross(u, p.offset_m)) < radius_m) return true;
   }
   return false;
+}
+
+bool wall_across(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
+                 const Point2& goal_m, double radius_m, double max_m) {
+  const Point2 d = goal_m - robot_m;
+  const double len = d.norm();
+  if (len < 1e-6) return false;
+  const Point2 u = d / len;
+  const double reach = std::min(len + radius_m, max_m);
+  bool left = false, right = false;
+  for (const ObstaclePoint& p : obstacles) {
+    const double along = p.offset_m.dot(u);
+    if (along < 0.1 || along > reach) continue;
+    const double lateral = cross(u, p.offset_m);
+    if (std::abs(lateral) >= radius_m) continue;
+    if (std::abs(lateral) < 0.05) return true;  // on the line itself (half a 10 cm cell)
+    (lateral > 0.0 ? left : right) = true;
+    if (left && right) return true;
+  }
+  return false;
+}
+
+std::optional<double> blocking_wall_angle_rad(const std::vector<ObstaclePoint>& obstacles,
+                                              const Point2& robot_m, const Point2& goal_m,
+                                              double radius_m, double max_m) {
+  const Point2 d = goal_m - robot_m;
+  const double len = d.norm();
+  if (len < 1e-6) return std::nullopt;
+  const Point2 u = d / len;
+  const double reach = std::min(len + radius_m, max_m);
+  // The first obstacle on the way...
+  std::optional<Point2> first;
+  for (const ObstaclePoint& p : obstacles) {
+    const double along = p.offset_m.dot(u);
+    if (along < 0.1 || along > reach || std::abs(cross(u, p.offset_m)) >= radius_m) continue;
+    if (!first || along < first->dot(u)) first = p.offset_m;
+  }
+  if (!first) return std::nullopt;
+  // ...and the structure it belongs to: every point within 1 m of it (the ±10° and ±30°
+  // transducers' axes meet a wall 1.5 m ahead 0.27 and 0.87 m off the line), its principal
+  // direction.
+  std::vector<Point2> near;
+  for (const ObstaclePoint& p : obstacles) {
+    if ((p.offset_m - *first).norm() <= 1.0) near.push_back(p.offset_m);
+  }
+  if (near.size() < 2) return std::nullopt;
+  const double wall_rad = principal_direction_rad(near);
+  const Point2 w(std::cos(wall_rad), std::sin(wall_rad));
+  return std::acos(std::min(1.0, std::abs(w.dot(u))));  // 0: along the line, π/2: across
 }
 
 std::optional<Opening> DoorPassage::find(const std::vector<ObstaclePoint>& obstacles,
@@ -143,6 +240,30 @@ void DoorPassage::start(const Opening& opening, double time_s) {
   seen_s_ = time_s;
 }
 
+void DoorPassage::recenter(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m) {
+  if (options_.recenter_gain <= 0.0) return;
+  // The jambs in the door's own frame: points within recenter_band_m of the door line. The
+  // nearest one on either side of the locked centre bound the gap actually there.
+  const Point2 side(-opening_.normal.y(), opening_.normal.x());
+  double left = std::numeric_limits<double>::infinity();
+  double right = -std::numeric_limits<double>::infinity();
+  for (const ObstaclePoint& o : obstacles) {
+    const Point2 rel = robot_m + o.offset_m - opening_.center_m;
+    if (std::abs(rel.dot(opening_.normal)) > options_.recenter_band_m) continue;
+    const double lateral = rel.dot(side);
+    if (std::abs(lateral) > options_.max_width_m) continue;
+    if (lateral >= 0.0)
+      left = std::min(left, lateral);
+    else
+      right = std::max(right, lateral);
+  }
+  // Both jambs seen, and a gap the robot fits through: move the centre toward its middle
+  // (low-pass, so one stray echo cannot throw the robot sideways).
+  if (!std::isfinite(left) || !std::isfinite(right)) return;
+  if (left - right < options_.min_width_m) return;
+  opening_.center_m += options_.recenter_gain * 0.5 * (left + right) * side;
+}
+
 std::optional<Point2> DoorPassage::step(const std::vector<ObstaclePoint>& obstacles,
                                         const Pose2& pose, const Point2& goal_m, double time_s) {
   if (mode_ == NavMode::kIdle) return std::nullopt;
@@ -160,6 +281,7 @@ std::optional<Point2> DoorPassage::step(const std::vector<ObstaclePoint>& obstac
       seen_s_ = time_s;
     }
   }
+  if (mode_ == NavMode::kDoorCross) recenter(obstacles, p);
   const Point2 rel = p - opening_.center_m;
   const double along = rel.dot(opening_.normal);  // < 0 before the opening
   const Point2 side(-opening_.normal.y(), opening_.normal.x());

@@ -35,6 +35,19 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
 bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
                   const Point2& goal_m, double radius_m, double from_m, double max_m);
 
+/// True when sensed obstacles lie within `radius_m` of the segment from robot_m toward
+/// goal_m (out to max_m) on both sides of it, or on it: something across the way, not beside.
+bool wall_across(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
+                 const Point2& goal_m, double radius_m, double max_m);
+
+/// The angle between the line from robot_m toward goal_m and the structure of the first
+/// obstacle within `radius_m` of it (up to max_m): the principal direction of the obstacle
+/// points within 1 m of that one. π/2 for a wall square across the way, near 0 for a wall
+/// the line runs along. nullopt when nothing blocks or too few points describe it.
+std::optional<double> blocking_wall_angle_rad(const std::vector<ObstaclePoint>& obstacles,
+                                              const Point2& robot_m, const Point2& goal_m,
+                                              double radius_m, double max_m);
+
 /// The state machine. step() returns the point to steer to; while crossing (mode()
 /// kDoorCross) the caller steers straight at it without VFH: the jambs may sit inside VFH's
 /// enlargement when the gap is sensed narrow.
@@ -82,6 +95,8 @@ class DoorPassage {
   std::vector<std::pair<Point2, double>> rejected_;  // opening centre, when it is forgotten
 
   void reject(double time_s);
+  /// While crossing: moves the opening's centre toward the middle of the jambs now sensed.
+  void recenter(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m);
 };
 
 }  // namespace cogmap::mapper::nav

@@ -135,9 +135,9 @@ LoopResult drive(const std::vector<Segment>& walls, const Point2& estimate_offse
   return r;
 }
 
-// Open (issue 9): with the estimate 0.4 m off the door is found, but VFH's swings in front
-// of the wall before the line is blocked lose it; enable once it passes.
-TEST(DoorPassage, DISABLED_PassesARealDoorTheDriftedEstimatePutsOffTheRoute) {
+// Issue 9: with the estimate 0.4 m off, the probe closes in on the wall until the sonar sees
+// the real opening, and the door behaviour passes it.
+TEST(DoorPassage, PassesARealDoorTheDriftedEstimatePutsOffTheRoute) {
   // The estimate is 0.4 m to one side and 3° off: the route's door waypoint (2, 0) lies in
   // the jamb. The robot must find the real 0.9 m opening and pass it without touching.
   for (const double side : {-1.0, 1.0}) {

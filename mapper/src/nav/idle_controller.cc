@@ -38,6 +38,10 @@ const char* to_string(NavMode mode) {
       return "door_cross";
     case NavMode::kExploreDone:
       return "explore_done";
+    case NavMode::kDoorProbe:
+      return "door_probe";
+    case NavMode::kDirect:
+      return "direct";
   }
   return "?";
 }

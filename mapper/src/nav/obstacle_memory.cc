@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace cogmap::mapper::nav {
 
@@ -24,6 +25,7 @@ void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
     return h.expires_s <= now || h.expires_s > now + options_.contact_keep_s + options_.keep_s;
   });
   const double max_range = std::min(options_.max_range_m, robot.sonar_max_range_m);
+  clear_along_beams(frame, pose, robot);
   for (const SonarReading& r : frame.sonar) {
     if (!r.echo || !std::isfinite(r.range_m)) continue;
     if (r.range_m < robot.sonar_min_range_m || r.range_m > max_range) continue;
@@ -33,6 +35,33 @@ void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
     const Point2 local(m.x_m + r.range_m * std::cos(m.heading_rad),
                        m.y_m + r.range_m * std::sin(m.heading_rad));
     push(pose.transform(local), now + options_.keep_s, false);
+  }
+}
+
+void ObstacleMemory::clear_along_beams(const SensorFrame& frame, const Pose2& pose,
+                                       const RobotGeometry& robot) {
+  if (options_.clear_half_angle_deg <= 0.0) return;
+  const double tan_half = std::tan(options_.clear_half_angle_deg * std::numbers::pi / 180.0);
+  for (const SonarReading& r : frame.sonar) {
+    if (r.index < 0 || static_cast<std::size_t>(r.index) >= robot.sonars.size()) continue;
+    if (!std::isfinite(r.range_m) || r.range_m < robot.sonar_min_range_m) continue;
+    // A reading beyond the sonar's range is no echo the mapper would use: it proves only
+    // that nothing answered nearer, like a pulse that never came back.
+    const bool echo = r.echo && r.range_m <= robot.sonar_max_range_m;
+    const double free_m = echo ? r.range_m - options_.clear_margin_m : options_.clear_max_m;
+    if (free_m <= 0.0) continue;
+    const SonarMount& m = robot.sonars[static_cast<std::size_t>(r.index)];
+    const Point2 origin = pose.transform(Point2(m.x_m, m.y_m));
+    const double axis_rad = pose.theta_rad + m.heading_rad;
+    const Point2 axis(std::cos(axis_rad), std::sin(axis_rad));
+    std::erase_if(hits_, [&](const Hit& h) {
+      if (h.contact) return false;  // the bumper's word outweighs the sonar's silence
+      const Point2 d = h.world_m - origin;
+      const double along = d.dot(axis);
+      if (along <= 0.0 || along >= free_m) return false;
+      const double lateral = std::abs(axis.x() * d.y() - axis.y() * d.x());
+      return lateral <= std::max(options_.clear_min_half_width_m, along * tan_half);
+    });
   }
 }
 

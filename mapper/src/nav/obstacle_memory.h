@@ -37,6 +37,8 @@ class ObstacleMemory {
 
  private:
   void push(const Point2& world_m, double expires_s, bool contact);
+  /// Removes remembered echoes in the core of this frame's beams, short of their readings.
+  void clear_along_beams(const SensorFrame& frame, const Pose2& pose, const RobotGeometry& robot);
 
   MemoryOptions options_;
   std::deque<Hit> hits_;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <utility>
 
@@ -42,6 +43,8 @@ class RouteFollower final : public Controller {
       if (done()) return core_.stop(NavMode::kDone);
     }
     const bool stuck = core_.check_stuck(input);
+    // Stuck on the way: probing head-on again would drive back into what stopped the robot.
+    if (stuck) probe_failed_at_ = here;
     const bool stalled_too_long = now - progress_s_ > options_.give_up_s;
     if ((stuck && ++attempts_ > options_.recovery.max_attempts) || stalled_too_long) {
       // This waypoint has defeated every recovery, or the robot has not come any nearer for
@@ -57,6 +60,13 @@ class RouteFollower final : public Controller {
     const double target_rad = std::atan2(to_goal.y(), to_goal.x());
     if (const auto cmd = core_.recover(input, target_rad)) return *cmd;
     if (const auto cmd = door_step(input, door_goal(here))) return *cmd;
+    if (lane_clear(here, goal)) {
+      // Nothing sensed in the body's lane to the waypoint: go straight. VFH's enlargement
+      // closes a gap the lane shows open (a 0.9 m door leaves 0.14 m of free band to it),
+      // and its valley choice then swings the robot from one side to the other.
+      return core_.drive_direct(input, target_rad, options_.speed_mps, NavMode::kDirect);
+    }
+    if (const auto cmd = probe_step(input, goal)) return *cmd;
     return core_.drive_toward(input, target_rad);
   }
 
@@ -102,6 +112,67 @@ class RouteFollower final : public Controller {
     return core_.drive_direct(input, rad, options_.speed_mps, NavMode::kDoorAlign);
   }
 
+  /// True when no sensed obstacle lies in the lane the body sweeps on the straight line to
+  /// `goal` (half the width plus direct_margin_m each side), out to direct_range_m.
+  bool lane_clear(const Point2& here, const Point2& goal) const {
+    // Only for a waypoint within reach: on a long leg (a corridor) a wall met at a shallow
+    // angle does not echo (specular) until it is too near, and VFH's enlargement of what the
+    // side transducers see is what keeps the robot off it.
+    if ((goal - here).norm() > options_.direct_range_m) return false;
+    const double half_lane = 0.5 * core_.robot().width_m + options_.direct_margin_m;
+    // From the rear bumper: what lies beside the body counts too (it sweeps past it when
+    // the robot turns toward the goal).
+    return !line_blocked(core_.field().points(), here, goal, half_lane,
+                         -0.5 * core_.robot().length_m, options_.direct_range_m);
+  }
+
+  /// Closes in on `goal` head-on at the door speed while a sensed obstacle blocks the line to
+  /// it within probe_range_m (DoorOptions: the sonar sees a door open only from near it).
+  /// Gives up once it makes no progress for probe_stall_s, until the robot has moved
+  /// probe_rearm_m away from where it gave up (the next wall may hold the door).
+  std::optional<VelocityCommand> probe_step(const NavInput& input, const Point2& goal) {
+    const DoorOptions& o = options_.door;
+    if (!o.enabled || o.probe_range_m <= 0.0) return std::nullopt;
+    const Point2 here = input.pose.translation();
+    if (probe_failed_at_) {
+      if ((here - *probe_failed_at_).norm() < o.probe_rearm_m) return std::nullopt;
+      probe_failed_at_.reset();
+    }
+    const double d = (goal - here).norm();
+    const double now = input.frame->time_s;
+    // A wall across the line (sensed on both sides of it within VFH's radius, or within the
+    // body's half-width of the line), not a corner grazing the lane from one side: that one
+    // is VFH's to go around.
+    // A wall met at a shallow angle is a corridor side the estimate's drift steers into,
+    // with no door to see through: VFH keeps off it.
+    const auto& points = core_.field().points();
+    const auto wall_rad =
+        blocking_wall_angle_rad(points, here, goal, options_.vfh.safety_radius_m, o.probe_range_m);
+    const bool across = wall_rad && *wall_rad >= o.probe_min_angle_deg * std::numbers::pi / 180.0;
+    if (!across ||
+        (!wall_across(points, here, goal, options_.vfh.safety_radius_m, o.probe_range_m) &&
+         !line_blocked(points, here, goal, 0.5 * core_.robot().width_m, 0.1, o.probe_range_m))) {
+      probe_since_s_.reset();
+      return std::nullopt;
+    }
+    const Point2 to_goal = goal - here;
+    const double goal_rad = std::atan2(to_goal.y(), to_goal.x());
+    // Turning on the spot toward the goal is no failure to close in: the clock starts once
+    // the robot faces it.
+    const bool turning = std::abs(wrap_angle_rad(goal_rad - input.pose.theta_rad)) >
+                         options_.safety.turn_in_place_deg * std::numbers::pi / 180.0;
+    if (!probe_since_s_ || turning || d < probe_best_m_ - options_.progress_m) {
+      probe_best_m_ = probe_since_s_ ? std::min(probe_best_m_, d) : d;
+      probe_since_s_ = now;
+    }
+    if (now - *probe_since_s_ > o.probe_stall_s) {
+      probe_failed_at_ = here;
+      probe_since_s_.reset();
+      return std::nullopt;
+    }
+    return core_.drive_direct(input, goal_rad, o.speed_mps, NavMode::kDoorProbe);
+  }
+
   /// A waypoint a drifted estimate puts inside or behind an obstacle is as reached as it can
   /// be once the robot is within blocked_reach_m and the sensed obstacle is in between.
   bool reached_behind_obstacle(const Point2& here) const {
@@ -116,6 +187,8 @@ class RouteFollower final : public Controller {
     leg_start_ = leg_start;
     ++index_;
     attempts_ = 0;
+    probe_failed_at_.reset();
+    probe_since_s_.reset();
     best_m_ = std::numeric_limits<double>::infinity();
     progress_s_ = now;
   }
@@ -156,7 +229,10 @@ class RouteFollower final : public Controller {
   int attempts_ = 0;                 // recoveries spent on the current waypoint
   std::optional<Point2> leg_start_;  // where the current leg began (previous waypoint or start)
   double best_m_ = std::numeric_limits<double>::infinity();  // nearest to the waypoint so far
-  double progress_s_ = 0.0;  // when the robot last came progress_m nearer to it
+  double progress_s_ = 0.0;                // when the robot last came progress_m nearer to it
+  std::optional<Point2> probe_failed_at_;  // where the probe last gave up (this waypoint)
+  std::optional<double> probe_since_s_;    // probing: when it last came progress_m nearer
+  double probe_best_m_ = 0.0;              // ...and how near that was
   NavCore core_;
   DoorPassage door_;
 };

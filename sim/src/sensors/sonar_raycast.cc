@@ -60,12 +60,12 @@ std::optional<RayHit> first_hit(const SonarScene& scene, const Point2& origin, c
     }
     return best;
   }
-  // thread_local keeps the buffer's allocation across the rays of every ping.
-  thread_local std::vector<int> candidates;
-  index->surfaces_near_ray(origin, dir, max_t_m, candidates);
-  for (const int i : candidates) {
+  // Cell by cell outwards from the origin, stopping once the nearest hit lies before the next
+  // cell: test_surface keeps the nearest hit (ties to the higher index) whatever the order.
+  index->walk_ray(origin, dir, max_t_m, [&](int i) {
     if (i != skip_surface) test_surface(scene, i, origin, dir, best_t, best);
-  }
+    return best_t;
+  });
   return best;
 }
 

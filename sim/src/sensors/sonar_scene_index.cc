@@ -129,17 +129,21 @@ bool SceneIndex::matches(const SonarScene& scene) const {
                                                scene.corners.size() * sizeof(Point2)) == 0);
 }
 
+void SceneIndex::next_query() const {
+  if (stamp_.size() != scene_.surfaces.size()) stamp_.assign(scene_.surfaces.size(), 0);
+  if (++query_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+}
+
 void SceneIndex::surfaces_near_ray(const Point2& origin, const Point2& dir, double max_t_m,
                                    std::vector<int>& out) const {
   out.clear();
   // Each surface once (a long wall lies in many cells), in cell order: first_hit breaks ties by
   // surface index, so the order does not change its answer. A stamp per surface replaces the
   // sort + unique that cost 40 % of all sonar instructions.
-  if (stamp_.size() != scene_.surfaces.size()) stamp_.assign(scene_.surfaces.size(), 0);
-  if (++query_ == 0) {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_ = 1;
-  }
+  next_query();
   const Point2 end = origin + max_t_m * dir;
   for_cells_of_segment(origin, end, [&](int cell) {
     for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {

@@ -4,7 +4,10 @@
 /// the brute-force ones, run over the candidates in ascending surface index, so every result is
 /// bit-identical to testing the whole scene.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "cogmap/mapper/seam/geometry.h"
@@ -28,6 +31,16 @@ class SceneIndex {
   void surfaces_near_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
                          std::vector<int>& out) const;
 
+  /// Calls `test(id)` once for each surface listed in the cells the ray origin + t·dir,
+  /// t in [0, max_t_m], crosses, nearest cell first (an Amanatides-Woo walk); `test` returns the
+  /// distance t of the nearest hit found so far (anything >= max_t_m for none). The walk stops
+  /// after a cell the ray leaves more than the padding beyond that hit: a surface listed only
+  /// further on cannot be hit nearer, so a test that keeps the nearest hit (ties to one fixed
+  /// surface, whatever the order) answers exactly as over surfaces_near_ray. Not thread-safe.
+  template <class Test>
+  void walk_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
+                Test&& test) const;
+
   /// True when a corner lies within `radius_m` of `p` (the same test, `norm() <= radius_m`, as a
   /// scan over every corner).
   bool corner_within(const mapper::Point2& p, double radius_m) const;
@@ -41,6 +54,8 @@ class SceneIndex {
   void for_cells_of_segment(const mapper::Point2& a, const mapper::Point2& b, Visit&& visit) const;
   int column_of(double x) const;
   int row_of(double y) const;
+  /// Starts a query: afterwards no surface counts as taken (stamp_ != query_).
+  void next_query() const;
 
   SonarScene scene_;
   double x0_ = 0.0, y0_ = 0.0, cell_m_ = 1.0;
@@ -54,5 +69,66 @@ class SceneIndex {
   mutable std::vector<std::uint32_t> stamp_;
   mutable std::uint32_t query_ = 0;
 };
+
+template <class Test>
+void SceneIndex::walk_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
+                          Test&& test) const {
+  const double ox = origin.x(), oy = origin.y(), dx = dir.x(), dy = dir.y();
+  if (!(std::isfinite(ox) && std::isfinite(oy) && std::isfinite(dx) && std::isfinite(dy) &&
+        std::isfinite(max_t_m))) {
+    // Nothing to walk on: the padded gather clamps such rays to the border cells.
+    thread_local std::vector<int> all;
+    surfaces_near_ray(origin, dir, max_t_m, all);
+    for (const int id : all) test(id);
+    return;
+  }
+  next_query();
+  // Clip [0, max_t_m] to the grid's box (it holds every surface with a margin), so a ray from
+  // outside starts where it enters.
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double t_in = 0.0, t_out = max_t_m;
+  auto clip = [&](double o, double d, double lo, double hi) {
+    if (d == 0.0) {
+      if (o < lo || o > hi) t_out = -kInf;  // parallel to the slab and outside it
+      return;
+    }
+    const double a = (lo - o) / d, b = (hi - o) / d;
+    t_in = std::max(t_in, std::min(a, b));
+    t_out = std::min(t_out, std::max(a, b));
+  };
+  clip(ox, dx, x0_, x0_ + nx_ * cell_m_);
+  clip(oy, dy, y0_, y0_ + ny_ * cell_m_);
+  if (!(t_in <= t_out)) return;
+  int c = column_of(ox + t_in * dx), r = row_of(oy + t_in * dy);
+  const int step_c = dx > 0.0 ? 1 : (dx < 0.0 ? -1 : 0);
+  const int step_r = dy > 0.0 ? 1 : (dy < 0.0 ? -1 : 0);
+  constexpr double kPadM = 1e-3;  // as the cell lists' padding (sonar_scene_index.cc)
+  double nearest_m = kInf;
+  for (;;) {
+    const int cell = r * nx_ + c;
+    for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
+      const int id = surface_ids_[k];
+      std::uint32_t& seen = stamp_[static_cast<std::size_t>(id)];
+      if (seen == query_) continue;
+      seen = query_;
+      nearest_m = test(id);
+    }
+    // Where the ray leaves this cell, from the cell's own borders (no accumulated rounding).
+    const double t_c = step_c > 0   ? (x0_ + (c + 1) * cell_m_ - ox) / dx
+                       : step_c < 0 ? (x0_ + c * cell_m_ - ox) / dx
+                                    : kInf;
+    const double t_r = step_r > 0   ? (y0_ + (r + 1) * cell_m_ - oy) / dy
+                       : step_r < 0 ? (y0_ + r * cell_m_ - oy) / dy
+                                    : kInf;
+    const double t_leave = std::min(t_c, t_r);
+    if (t_leave >= t_out) return;  // the ray ends in this cell
+    // A hit at t lies in the cell the walk is in at t, and its surface is listed in every cell
+    // within the padding of it: nothing untested can be hit before t_leave - kPadM.
+    if (nearest_m < t_leave - kPadM) return;
+    if (t_c <= t_r) c += step_c;
+    if (t_r <= t_c) r += step_r;
+    if (c < 0 || c >= nx_ || r < 0 || r >= ny_) return;
+  }
+}
 
 }  // namespace cogmap::sim::sonar_detail

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cogmap/mapper/grid/grid.h"
+#include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
 
@@ -22,8 +23,9 @@ std::string histogram_to_pgm(const mapper::HistogramGrid& grid, double occupied_
 /// lower-left pixel (the grid's local frame), occupied_thresh 0.65, free_thresh 0.196, negate 0.
 std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string& image_name);
 
-/// Writes `<dir>/<stem>.pgm` and `<dir>/<stem>.yaml` atomically.
+/// Writes `<dir>/<stem>.pgm` and `<dir>/<stem>.yaml` atomically, fsynced per `durability`.
 void write_ros_map(const mapper::HistogramGrid& grid, double occupied_threshold,
-                   const std::filesystem::path& dir, const std::string& stem);
+                   const std::filesystem::path& dir, const std::string& stem,
+                   mapper::io::Durability durability = mapper::io::Durability::kSynced);
 
 }  // namespace cogmap::experiments

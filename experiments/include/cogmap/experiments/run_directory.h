@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cogmap/experiments/experiment_config.h"
+#include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
 
@@ -55,8 +56,10 @@ class RunDirectoryLock {
 /// Makes `dir` ready for a run, under its lock: checks it (check_run_directory), writes the
 /// marker, removes temp files an interrupted writer left (DIR, DIR/asrs, DIR/figures) and the
 /// products of an earlier run (clear_run_outputs), then writes experiment.yaml
-/// (run_experiment_yaml). Throws RunDirectoryError or std::runtime_error.
-void prepare_run_directory(const std::filesystem::path& dir, const Experiment& experiment);
+/// (run_experiment_yaml); both files fsynced per `durability`. Throws RunDirectoryError or
+/// std::runtime_error.
+void prepare_run_directory(const std::filesystem::path& dir, const Experiment& experiment,
+                           mapper::io::Durability durability = mapper::io::Durability::kSynced);
 
 /// experiment.yaml as saved in run directory `dir`: the resolved experiment, with a relative
 /// `world:` rewritten relative to `dir`, so `cogmap run DIR/experiment.yaml` finds the world.

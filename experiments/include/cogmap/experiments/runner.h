@@ -12,6 +12,7 @@
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/run_metrics.h"
+#include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/mapper/seam/robot.h"
 
 namespace cogmap::experiments {
@@ -28,6 +29,10 @@ struct RunOptions {
   std::filesystem::path out_dir;  ///< the run directory (created)
   std::optional<bool> figures;    ///< overrides output.figures (--no-figures)
   mapper::Pose2 start_pose;       ///< used when there is no ground truth
+  /// Whether every finished room and result file is fsynced as it is written. Synced by
+  /// default (drive, replay: what is lost cannot be redone); `run` and `sweep` choose kAtomic
+  /// unless --fsync (docs/performance.md "Durability").
+  mapper::io::Durability durability = mapper::io::Durability::kSynced;
   /// Called about once a simulated second with the time reached (progress bars); may be empty.
   std::function<void(double time_s, double duration_s)> on_progress;
 };

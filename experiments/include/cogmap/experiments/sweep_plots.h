@@ -28,9 +28,11 @@ const std::vector<std::string>& plotted_metrics();
 std::vector<MetricSeries> metric_series(const ResultsTable& table, const std::string& metric,
                                         std::vector<std::string>* x_categories = nullptr);
 
-/// Writes `dir/<metric>.png` for every plotted metric that has data. Returns the files
-/// written; empty when built without the render module.
+/// Writes `dir/<metric>.png` for every plotted metric that has data, on up to `jobs` threads
+/// (figures draw in parallel). Returns the files written, in plotted_metrics() order. Throws
+/// the first failure (in that order) after every thread has finished.
 std::vector<std::filesystem::path> write_sweep_plots(const ResultsTable& table,
-                                                     const std::filesystem::path& dir);
+                                                     const std::filesystem::path& dir,
+                                                     unsigned jobs = 1);
 
 }  // namespace cogmap::experiments

@@ -4,7 +4,9 @@
 /// Every writer throws std::runtime_error naming the file when the PNG cannot be written or no
 /// font is found (COGMAP_FONT overrides the font file). A PNG is written to a temporary file and
 /// renamed, so an existing figure is never left half-written. Missing parent directories are
-/// created. Calls from several threads are safe; they are serialised.
+/// created. Calls from several threads are safe and draw in parallel (each figure has its own
+/// OSMesa context and FreeType library). The drawing code is a plugin loaded on the first call
+/// (renderer.h); without it every writer throws RendererUnavailable.
 
 #include <filesystem>
 #include <string>

@@ -36,6 +36,9 @@ enum class NavMode : std::uint8_t {
   kDoorAlign,    ///< door behaviour: driving to the point in front of a sensed opening
   kDoorCross,    ///< door behaviour: crossing the opening along its axis
   kExploreDone,  ///< explorer: no unexplored exit left (or a budget ran out)
+  kDoorProbe,    ///< door behaviour: closing in slowly on a waypoint behind a sensed wall
+                 ///< until the sonar sees through the opening (or the way proves shut)
+  kDirect,       ///< route follower: straight at the waypoint, its lane sensed clear
 };
 
 /// The mode's name for logs and traces ("drive", "door_cross", ...).
@@ -107,6 +110,16 @@ struct MemoryOptions {
   float hit_value = 8.0f;        ///< HIMM-scale certainty per echo in a cell (one echo > ε)
   double contact_keep_s = 10.0;  ///< a stuck contact (invisible obstacle) is kept this long
   std::size_t max_hits = 4096;   ///< bound on remembered echoes (oldest dropped first)
+  /// Free-space clearing (HIMM's decrement along the axis, thesis §2.2.3): a later reading
+  /// that runs past a remembered echo along its axis removes it. An echo off a door jamb
+  /// seen at the beam's edge is painted on the axis, inside the opening; the next pulse of
+  /// the same transducer through the opening erases it. 0 disables.
+  double clear_half_angle_deg = 3.0;     ///< the core of the beam (two-way sd 6°: weight 0.88
+                                         ///< at 3°, so a reflector there would have answered)
+  double clear_min_half_width_m = 0.05;  ///< never narrower than this (half a 10 cm cell)
+  double clear_margin_m = 0.2;           ///< an echo this close before the reading is kept (range
+                                         ///< noise and the 0.15 m threshold walk of weak echoes)
+  double clear_max_m = 3.0;  ///< a reading without echo clears this far (the memory's reach)
 };
 
 /// Heading control and the front safety check.
@@ -149,23 +162,49 @@ struct DoorOptions {
   double approach_m = 0.8;      ///< align on the door axis this far before the opening
   double exit_m = 0.7;          ///< the crossing ends this far beyond it (half the body + margin)
   double lookahead_m = 0.6;     ///< pure pursuit along the axis while crossing
-  double align_tolerance_m = 0.12;  ///< lateral error at which the crossing starts
-  double speed_mps = 0.3;           ///< crossing speed: 2.3 s through a 0.7 m band, time for the
-                                    ///< side sonars (fired every ~0.5 s) to see both jambs
-  double track_m = 0.4;             ///< a re-detected opening within this is the same door
-  double confirm_s = 0.3;           ///< detected this long without a break before it is trusted
-                                    ///< (3 cycles): one-cycle gaps between sparse early echoes
-                                    ///< are ignored; 1.0 s was measured worse (the detection
-                                    ///< flickers while the robot turns and is never confirmed)
-  double timeout_s = 25.0;          ///< a passage not done in this long is abandoned (bounded)
-  double lost_s = 6.0;              ///< ...as is one not re-detected for this long before crossing
-                                    ///< (twice the sonar memory's 3 s)
-  double closed_after_s = 3.0;      ///< crossing: less than closed_progress_m along the axis in
-  double closed_progress_m = 0.15;  ///< this long means the opening is closed (at the door
-                                    ///< speed 0.15 m takes 0.5 s; recoveries start at 4 s)
-  double jamb_support_m = 0.35;     ///< a jamb point needs a wall point this close beyond it
-                                    ///< (10 cm cells, a 30° beam at 1-2 m leaves 0.1-0.3 m gaps)
-  double rejected_keep_s = 30.0;    ///< a closed or abandoned opening is not retried this long
+  double align_tolerance_m = 0.12;   ///< lateral error at which the crossing starts
+  double speed_mps = 0.3;            ///< crossing speed: 2.3 s through a 0.7 m band, time for the
+                                     ///< side sonars (fired every ~0.5 s) to see both jambs
+  double track_m = 0.4;              ///< a re-detected opening within this is the same door
+  double confirm_s = 0.3;            ///< detected this long without a break before it is trusted
+                                     ///< (3 cycles): one-cycle gaps between sparse early echoes
+                                     ///< are ignored; 1.0 s was measured worse (the detection
+                                     ///< flickers while the robot turns and is never confirmed)
+  double timeout_s = 25.0;           ///< a passage not done in this long is abandoned (bounded)
+  double lost_s = 6.0;               ///< ...as is one not re-detected for this long before crossing
+                                     ///< (twice the sonar memory's 3 s)
+  double closed_after_s = 3.0;       ///< crossing: less than closed_progress_m along the axis in
+  double closed_progress_m = 0.15;   ///< this long means the opening is closed (at the door
+                                     ///< speed 0.15 m takes 0.5 s; recoveries start at 4 s)
+  double jamb_support_m = 0.35;      ///< a jamb point needs a wall point this close beyond it
+                                     ///< (10 cm cells, a 30° beam at 1-2 m leaves 0.1-0.3 m gaps)
+  double rejected_keep_s = 30.0;     ///< a closed or abandoned opening is not retried this long
+  double max_axis_angle_deg = 60.0;  ///< an opening's axis may lie this far off the direction
+                                     ///< to the goal (a door 0.5 m aside from 1 m: 27°)
+  double goal_in_door_m = 0.8;       ///< a goal within approach_m of an opening's line must lie
+                                     ///< this near its centre (0.5 m drift + half a 0.6 m door)
+  double wall_fit_m = 1.0;           ///< the opening's axis is fitted to the wall this far beyond
+                                     ///< each jamb (0 = the jamb line alone)
+  /// Probing: the P2-AT has no 0° transducer, and from farther than ~1 m its ±10° beams
+  /// reach a 1 m door's jambs (10-20° off their axes) and paint them inside the opening. So
+  /// a waypoint within probe_range_m behind a sensed wall is approached head-on at the door
+  /// speed, which brings the ±10° beams through the gap (at 0.8 m the jambs lie 22° off
+  /// their axes) and lets the clearing open it, instead of VFH swinging along the wall.
+  double probe_range_m = 2.5;         ///< a sensed wall across the line to the waypoint nearer
+                                      ///< than this is probed (VFH's window)
+  double probe_min_angle_deg = 45.0;  ///< ...meeting the line at least this steeply (a door's
+                                      ///< wall is crossed, a corridor side is run along)
+  double probe_rearm_m = 1.0;         ///< after a failed probe, probe again only this far away
+  double probe_stall_s = 3.0;         ///< no progress_m nearer for this long (turning on the spot
+                                      ///< excepted): the probe has failed and VFH takes over
+                                      ///< until probe_rearm_m; 5 s (beyond the memory's keep_s) was
+                                      ///< measured no better (docs/algorithms.md, "Door passage")
+  /// Crossing: the side transducers see the jambs square-on; the opening's centre follows
+  /// the middle between the nearest sensed points either side within recenter_band_m of the
+  /// door line (a 0.12 m wall plus a 10 cm cell either side), by this fraction per cycle
+  /// (0.2 at 10 Hz: a time constant of ~0.5 s, longer than one sonar cycle). 0 disables.
+  double recenter_gain = 0.2;
+  double recenter_band_m = 0.3;
 };
 
 /// The route follower (experiments drive a robot through a list of world points).
@@ -184,12 +223,17 @@ struct RouteOptions {
   SafetyOptions safety;
   RecoveryOptions recovery;
   DoorOptions door;
-  double give_up_s = 40.0;       ///< a waypoint not approached by progress_m within this long is
-                                 ///< given up: the longest leg in a 5 x 5 m room (7 m) takes 14 s,
-                                 ///< plus a door passage (~10 s) and a recovery, with margin
-  double progress_m = 0.3;       ///< what counts as approaching
-  double blocked_reach_m = 0.9;  ///< a waypoint this close behind a sensed obstacle (a door
-                                 ///< centre the drifted estimate puts in the jamb) is reached
+  double give_up_s = 40.0;        ///< a waypoint not approached by progress_m within this long is
+                                  ///< given up: the longest leg in a 5 x 5 m room (7 m) takes 14 s,
+                                  ///< plus a door passage (~10 s) and a recovery, with margin
+  double progress_m = 0.3;        ///< what counts as approaching
+  double direct_range_m = 2.5;    ///< a waypoint this near (VFH's window) with a clear lane
+                                  ///< to it is driven straight at, without VFH. 0 = always
+                                  ///< VFH (the thesis's behaviour)
+  double direct_margin_m = 0.08;  ///< beyond the body's half-width each side: VFH's margin
+                                  ///< (safety_radius_m 0.33 = 0.2525 + 0.08)
+  double blocked_reach_m = 0.9;   ///< a waypoint this close behind a sensed obstacle (a door
+                                  ///< centre the drifted estimate puts in the jamb) is reached
 };
 
 /// The explorer (thesis §1.1.4, Fig. 1.2): head for the most unexplored free direction.

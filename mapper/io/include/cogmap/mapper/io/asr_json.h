@@ -34,18 +34,34 @@ std::string asr_graph_to_json_text(const AsrGraph& graph);
 /// Parses and validates a room graph; errors name `file` and the field path.
 AsrGraph asr_graph_from_json_text(std::string_view text, const std::string& file);
 
-/// Writes asr_graph.json atomically (temp file, fsync, rename, fsync of the directory).
-void write_asr_graph_json(const AsrGraph& graph, const std::filesystem::path& path);
+/// How far write_file_atomic goes to make a file last. Both replace the file whole or not at
+/// all (temp file, rename), so a reader, or a process restarted after kill -9, sees the old file
+/// or the new one; they differ only when the machine itself stops (power loss, kernel crash).
+enum class Durability {
+  /// fsync the file, rename, fsync the directory: on disk when the call returns. For what cannot
+  /// be redone: a real robot's rooms (`drive`), a replay.
+  kSynced,
+  /// rename only; the kernel writes the data back in its own time, and a power cut may lose the
+  /// last files written. For simulated runs, which their seed redoes bit for bit
+  /// (docs/performance.md "Durability").
+  kAtomic,
+};
+
+/// Writes asr_graph.json atomically (temp file, fsync, rename, fsync of the directory; the
+/// fsyncs only for Durability::kSynced).
+void write_asr_graph_json(const AsrGraph& graph, const std::filesystem::path& path,
+                          Durability durability = Durability::kSynced);
 
 /// Reads a file written by write_asr_graph_json.
 AsrGraph read_asr_graph_json(const std::filesystem::path& path);
 
 /// Replaces `path` with `content` so that a crash at any moment leaves either the old file or
 /// the new one, never a mix: write a temp file in the same directory, fsync it, rename it over
-/// `path`, fsync the directory. Missing parent directories are created. Temp names are unique
-/// per process and call, so threads may write side by side. Throws std::runtime_error naming
-/// the path on any failure.
-void write_file_atomic(const std::filesystem::path& path, std::string_view content);
+/// `path`, fsync the directory (both fsyncs only for Durability::kSynced). Missing parent
+/// directories are created. Temp names are unique per process and call, so threads may write
+/// side by side. Throws std::runtime_error naming the path on any failure.
+void write_file_atomic(const std::filesystem::path& path, std::string_view content,
+                       Durability durability = Durability::kSynced);
 
 /// True for the name of a temporary file this module or the PNG writer makes:
 /// ".<name>.tmp-<pid>-<n>" or ".<name>.tmp.<pid>.<n>".

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cogmap/mapper/graph/asr_store.h"
+#include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::mapper::io {
 
@@ -14,7 +15,9 @@ class DirectoryAsrStore final : public AsrStore {
  public:
   /// Opens (creating if needed) `dir` and indexes the NNN.json files already in it.
   /// Throws std::runtime_error naming the directory when it cannot be created or listed.
-  explicit DirectoryAsrStore(std::filesystem::path dir);
+  /// `durability`: whether each room is fsynced as it is saved (write_file_atomic).
+  explicit DirectoryAsrStore(std::filesystem::path dir,
+                             Durability durability = Durability::kSynced);
   /// Writes `dir/NNN.json` atomically (write_file_atomic). Throws std::invalid_argument for a
   /// negative id or a non-finite number, std::runtime_error on an I/O failure.
   void save(const Asr& asr) override;
@@ -27,6 +30,7 @@ class DirectoryAsrStore final : public AsrStore {
 
  private:
   std::filesystem::path dir_;
+  Durability durability_;
   std::set<int> ids_;
 };
 

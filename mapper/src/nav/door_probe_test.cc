@@ -1,0 +1,117 @@
+// The route follower's probe (DoorOptions probe_range_m, probe_stall_s): a waypoint within
+// probe_range_m behind a sensed wall is approached head-on at the door speed. The P2-AT faces
+// +x at the origin; its front transducers (2-5, at ±10° and ±30°) see a wall along x = wall_x
+// where their axes meet it. No grid: the obstacles are the remembered echoes, in 10 cm cells.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "cogmap/mapper/nav/controller.h"
+#include "nav/nav_test_util.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+using testing::frame_at;
+
+/// Readings of transducers 2-5 of `robot` (at the origin, facing +x) off a wall x = wall_x.
+std::vector<SonarReading> wall_echoes(const RobotGeometry& robot, double wall_x, double time_s) {
+  std::vector<SonarReading> out;
+  for (int i = 2; i <= 5; ++i) {
+    const SonarMount& m = robot.sonars[static_cast<std::size_t>(i)];
+    out.push_back({i, (wall_x - m.x_m) / std::cos(m.heading_rad), true, time_s});
+  }
+  return out;
+}
+
+struct Probe {
+  RobotGeometry robot = p2at_geometry();
+  SensorFrame frame;
+
+  VelocityCommand step(Controller& c, int i, double wall_x) {
+    frame = frame_at(i);
+    frame.sonar = wall_echoes(robot, wall_x, frame.time_s);
+    return c.step({&frame, Pose2{0.0, 0.0, 0.0}, nullptr, &robot});
+  }
+  /// Nothing in sight: every transducer fires without an echo.
+  VelocityCommand step_open(Controller& c, int i) {
+    frame = frame_at(i);
+    for (int k = 0; k < static_cast<int>(robot.sonars.size()); ++k) {
+      frame.sonar.push_back({k, robot.sonar_max_range_m, false, frame.time_s});
+    }
+    return c.step({&frame, Pose2{0.0, 0.0, 0.0}, nullptr, &robot});
+  }
+};
+
+// Wall at x = 1.55: the ±10° echoes fall in the cells centred (1.55, ±0.25), within the 0.33 m
+// safety radius of the line to the waypoint; 1.57 m away, 1.26 m from the bumper: full speed.
+TEST(DoorProbe, ClosesInOnAWaypointBehindAWallAtTheDoorSpeed) {
+  Probe p;
+  RouteOptions options;
+  options.door.speed_mps = 0.25;  // not a value the follower would reach by another path
+  auto c = make_route_follower(options, {Point2(2.0, 0.0)});
+  const VelocityCommand cmd = p.step(*c, 0, 1.55);
+  EXPECT_EQ(c->trace().mode, NavMode::kDoorProbe);
+  EXPECT_DOUBLE_EQ(cmd.v_mps, 0.25);
+  EXPECT_DOUBLE_EQ(cmd.w_radps, 0.0);
+  EXPECT_DOUBLE_EQ(c->trace().target_rad, 0.0);
+}
+
+// Wall at x = 0.95: the nearest echoes fall in the cells centred (0.95, ±0.15), inside the
+// front cone and nearer than slow_clearance_m from the bumper: the safety law slows the probe.
+TEST(DoorProbe, SlowsDownNearTheWallByTheSafetyLaw) {
+  Probe p;
+  auto c = make_route_follower(RouteOptions{}, {Point2(2.0, 0.0)});
+  const VelocityCommand cmd = p.step(*c, 0, 0.95);
+  EXPECT_EQ(c->trace().mode, NavMode::kDoorProbe);
+  const double clearance = std::hypot(0.95, 0.15) - 0.5 * p.robot.length_m;
+  EXPECT_NEAR(c->trace().front_clearance_m, clearance, 1e-9);
+  EXPECT_NEAR(cmd.v_mps, 0.3 * (clearance - 0.35) / (1.0 - 0.35), 1e-9);  // door speed 0.3
+  EXPECT_DOUBLE_EQ(cmd.w_radps, 0.0);
+}
+
+TEST(DoorProbe, ProbesOnlyAWallWithinRangeAcrossTheLine) {
+  Probe p;
+  RouteOptions off;
+  off.door.probe_range_m = 0.0;
+  auto disabled = make_route_follower(off, {Point2(2.0, 0.0)});
+  p.step(*disabled, 0, 1.55);
+  EXPECT_NE(disabled->trace().mode, NavMode::kDoorProbe);
+
+  // The wall 2.8 m away: beyond the default probe_range_m 2.5 m.
+  auto far = make_route_follower(RouteOptions{}, {Point2(3.5, 0.0)});
+  p.step(*far, 0, 2.8);
+  EXPECT_NE(far->trace().mode, NavMode::kDoorProbe);
+  // The same waypoint behind a wall 1.55 m away: the wall's distance decides, not the
+  // waypoint's (a room centre beyond a door is probed like the door centre).
+  auto near = make_route_follower(RouteOptions{}, {Point2(3.5, 0.0)});
+  p.step(*near, 0, 1.55);
+  EXPECT_EQ(near->trace().mode, NavMode::kDoorProbe);
+
+  // Nothing sensed: the line to the waypoint is clear (VFH or the direct drive takes it).
+  auto clear = make_route_follower(RouteOptions{}, {Point2(2.0, 0.0)});
+  const VelocityCommand open = p.step_open(*clear, 0);
+  EXPECT_NE(clear->trace().mode, NavMode::kDoorProbe);
+  EXPECT_DOUBLE_EQ(open.v_mps, 0.5);  // the route speed, not the door speed
+}
+
+// Standing still in front of the wall, the probe gives up after probe_stall_s (3 s) without
+// coming progress_m nearer, before the 4 s stuck recovery.
+TEST(DoorProbe, GivesUpAfterProbeStallWithoutProgress) {
+  Probe p;
+  auto c = make_route_follower(RouteOptions{}, {Point2(2.0, 0.0)});
+  for (int i = 0; i <= 29; ++i) p.step(*c, i, 1.55);  // t = 0 .. 2.9 s
+  EXPECT_EQ(c->trace().mode, NavMode::kDoorProbe);
+  p.step(*c, 30, 1.55);
+  p.step(*c, 31, 1.55);  // t = 3.1 s
+  EXPECT_NE(c->trace().mode, NavMode::kDoorProbe);
+  EXPECT_EQ(c->trace().recoveries, 0u);
+  p.step(*c, 32, 1.55);  // once given up, not resumed before the robot moves probe_rearm_m
+  EXPECT_NE(c->trace().mode, NavMode::kDoorProbe);
+}
+
+TEST(DoorProbe, TheModeHasAName) { EXPECT_STREQ(to_string(NavMode::kDoorProbe), "door_probe"); }
+
+}  // namespace
+}  // namespace cogmap::mapper::nav
