@@ -3,8 +3,6 @@
 /// merged, cell by cell, with the short-term memory (the larger certainty wins, so an obstacle
 /// both in the grid and in the memory is not counted twice).
 
-#include <map>
-#include <utility>
 #include <vector>
 
 #include "cogmap/mapper/grid/grid_updater.h"
@@ -24,7 +22,7 @@ class ObstacleField {
   const std::vector<ObstaclePoint>& points() const { return points_; }
 
   /// True when `cell` (of geometry()) holds an obstacle inside the window.
-  bool occupied(CellIndex cell) const { return cells_.count({cell.x, cell.y}) != 0; }
+  bool occupied(CellIndex cell) const;
 
   /// The cell lattice used: the room grid's (cells outside it included), or 10 cm cells at
   /// the origin when there is no grid.
@@ -34,8 +32,17 @@ class ObstacleField {
   VfhOptions vfh_;
   MemoryOptions memory_;
   GridGeometry geometry_;
-  std::map<std::pair<int, int>, float> cells_;
+  // The window's bounding box of cells, and per cell (x-major: index (x - lo.x)·ny + (y - lo.y),
+  // the order points_ keep) the obstacle's certainty, or a negative value for none.
+  CellIndex lo_{0, 0};
+  int nx_ = 0, ny_ = 0;
+  std::vector<float> cells_;
+  std::vector<float> near_grid_;  // room-grid cells nearer than grid_min_range_m
+  std::vector<float> echoes_;     // the memory's echoes, summed per cell
   std::vector<ObstaclePoint> points_;
+
+  /// The index of `c` in the box, or -1 outside it.
+  int slot(CellIndex c) const;
 };
 
 }  // namespace cogmap::mapper::nav
