@@ -9,6 +9,7 @@
 
 #include "cogmap/mapper/nav/controller.h"
 #include "cogmap/mapper/nav/vfh.h"
+#include "nav/path_obstacles.h"
 
 namespace cogmap::mapper::nav {
 
@@ -29,24 +30,6 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
                                     const Point2& robot_m, const Point2& goal_m,
                                     const DoorOptions& options,
                                     const std::vector<Point2>& excluded = {});
-
-/// True when a sensed obstacle lies within `radius_m` of the segment from robot_m toward
-/// goal_m, between `from_m` along it and `max_m` (or radius_m beyond the goal, if nearer).
-bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
-                  const Point2& goal_m, double radius_m, double from_m, double max_m);
-
-/// True when sensed obstacles lie within `radius_m` of the segment from robot_m toward
-/// goal_m (out to max_m) on both sides of it, or on it: something across the way, not beside.
-bool wall_across(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
-                 const Point2& goal_m, double radius_m, double max_m);
-
-/// The angle between the line from robot_m toward goal_m and the structure of the first
-/// obstacle within `radius_m` of it (up to max_m): the principal direction of the obstacle
-/// points within 1 m of that one. π/2 for a wall square across the way, near 0 for a wall
-/// the line runs along. nullopt when nothing blocks or too few points describe it.
-std::optional<double> blocking_wall_angle_rad(const std::vector<ObstaclePoint>& obstacles,
-                                              const Point2& robot_m, const Point2& goal_m,
-                                              double radius_m, double max_m);
 
 /// The state machine. step() returns the point to steer to; while crossing (mode()
 /// kDoorCross) the caller steers straight at it without VFH: the jambs may sit inside VFH's

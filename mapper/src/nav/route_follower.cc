@@ -140,11 +140,10 @@ class RouteFollower final : public Controller {
     }
     const double d = (goal - here).norm();
     const double now = input.frame->time_s;
-    // A wall across the line (sensed on both sides of it within VFH's radius, or within the
-    // body's half-width of the line), not a corner grazing the lane from one side: that one
-    // is VFH's to go around.
-    // A wall met at a shallow angle is a corridor side the estimate's drift steers into,
-    // with no door to see through: VFH keeps off it.
+    // Only a wall across the line: sensed on both sides of it within VFH's radius (or within
+    // the body's half-width of the line), and meeting it at probe_min_angle_deg or more. A
+    // corner grazing the lane from one side is VFH's to go around; a wall met at a shallow
+    // angle is a corridor side the estimate's drift steers into, with no door to see through.
     const auto& points = core_.field().points();
     const auto wall_rad =
         blocking_wall_angle_rad(points, here, goal, options_.vfh.safety_radius_m, o.probe_range_m);

@@ -1,0 +1,93 @@
+// Geometric tests of the sensed obstacles against the straight way to a goal, shared by the
+// door behaviour and the route follower.
+#include "nav/path_obstacles.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cogmap::mapper::nav {
+namespace {
+
+double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+}  // namespace
+
+double principal_direction_rad(const std::vector<Point2>& points) {
+  Point2 mean(0.0, 0.0);
+  for (const Point2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  double sxx = 0.0, sxy = 0.0, syy = 0.0;
+  for (const Point2& p : points) {
+    const Point2 d = p - mean;
+    sxx += d.x() * d.x();
+    sxy += d.x() * d.y();
+    syy += d.y() * d.y();
+  }
+  return 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+}
+
+bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
+                  const Point2& goal_m, double radius_m, double from_m, double max_m) {
+  const Point2 d = goal_m - robot_m;
+  const double len = d.norm();
+  if (len < 1e-6) return false;
+  const Point2 u = d / len;
+  const double reach = std::min(len + radius_m, max_m);  // a goal in a wall is blocked too
+  for (const ObstaclePoint& p : obstacles) {
+    const double along = p.offset_m.dot(u);
+    if (along < from_m || along > reach) continue;
+    if (std::abs(cross(u, p.offset_m)) < radius_m) return true;
+  }
+  return false;
+}
+
+bool wall_across(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
+                 const Point2& goal_m, double radius_m, double max_m) {
+  const Point2 d = goal_m - robot_m;
+  const double len = d.norm();
+  if (len < 1e-6) return false;
+  const Point2 u = d / len;
+  const double reach = std::min(len + radius_m, max_m);
+  bool left = false, right = false;
+  for (const ObstaclePoint& p : obstacles) {
+    const double along = p.offset_m.dot(u);
+    if (along < 0.1 || along > reach) continue;
+    const double lateral = cross(u, p.offset_m);
+    if (std::abs(lateral) >= radius_m) continue;
+    if (std::abs(lateral) < 0.05) return true;  // on the line itself (half a 10 cm cell)
+    (lateral > 0.0 ? left : right) = true;
+    if (left && right) return true;
+  }
+  return false;
+}
+
+std::optional<double> blocking_wall_angle_rad(const std::vector<ObstaclePoint>& obstacles,
+                                              const Point2& robot_m, const Point2& goal_m,
+                                              double radius_m, double max_m) {
+  const Point2 d = goal_m - robot_m;
+  const double len = d.norm();
+  if (len < 1e-6) return std::nullopt;
+  const Point2 u = d / len;
+  const double reach = std::min(len + radius_m, max_m);
+  // The first obstacle on the way...
+  std::optional<Point2> first;
+  for (const ObstaclePoint& p : obstacles) {
+    const double along = p.offset_m.dot(u);
+    if (along < 0.1 || along > reach || std::abs(cross(u, p.offset_m)) >= radius_m) continue;
+    if (!first || along < first->dot(u)) first = p.offset_m;
+  }
+  if (!first) return std::nullopt;
+  // ...and the structure it belongs to: every point within 1 m of it (the ±10° and ±30°
+  // transducers' axes meet a wall 1.5 m ahead 0.27 and 0.87 m off the line), its principal
+  // direction.
+  std::vector<Point2> near;
+  for (const ObstaclePoint& p : obstacles) {
+    if ((p.offset_m - *first).norm() <= 1.0) near.push_back(p.offset_m);
+  }
+  if (near.size() < 2) return std::nullopt;
+  const double wall_rad = principal_direction_rad(near);
+  const Point2 w(std::cos(wall_rad), std::sin(wall_rad));
+  return std::acos(std::min(1.0, std::abs(w.dot(u))));  // 0: along the line, π/2: across
+}
+
+}  // namespace cogmap::mapper::nav
