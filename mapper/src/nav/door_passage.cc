@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "cogmap/mapper/asr/stages.h"
+
 namespace cogmap::mapper::nav {
 namespace {
 
@@ -30,8 +32,9 @@ Point2 wall_normal(const std::vector<std::optional<Point2>>& scan, const Point2&
     wall.push_back(rel);
   }
   if (o.wall_fit_m <= 0.0 || wall.size() < 4) return jamb_normal;
-  const double angle = principal_direction_rad(wall);
-  Point2 n(-std::sin(angle), std::cos(angle));
+  const LineFit fit = fit_line(wall);  // the ASR stage's orthogonal fit (§3.1.8)
+  if (!fit.valid) return jamb_normal;
+  Point2 n(-fit.direction.y(), fit.direction.x());
   if (n.dot(jamb_normal) < 0.0) n = -n;
   // A fit far from the jamb line is some other structure (a corner): keep the jambs' word.
   return n.dot(jamb_normal) > std::cos(o.max_axis_angle_deg * kPi / 180.0 / 2.0) ? n : jamb_normal;

@@ -5,26 +5,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cogmap/mapper/asr/stages.h"
+
 namespace cogmap::mapper::nav {
 namespace {
 
 double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 }  // namespace
-
-double principal_direction_rad(const std::vector<Point2>& points) {
-  Point2 mean(0.0, 0.0);
-  for (const Point2& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  double sxx = 0.0, sxy = 0.0, syy = 0.0;
-  for (const Point2& p : points) {
-    const Point2 d = p - mean;
-    sxx += d.x() * d.x();
-    sxy += d.x() * d.y();
-    syy += d.y() * d.y();
-  }
-  return 0.5 * std::atan2(2.0 * sxy, sxx - syy);
-}
 
 bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
                   const Point2& goal_m, double radius_m, double from_m, double max_m) {
@@ -84,10 +72,10 @@ std::optional<double> blocking_wall_angle_rad(const std::vector<ObstaclePoint>& 
   for (const ObstaclePoint& p : obstacles) {
     if ((p.offset_m - *first).norm() <= 1.0) near.push_back(p.offset_m);
   }
-  if (near.size() < 2) return std::nullopt;
-  const double wall_rad = principal_direction_rad(near);
-  const Point2 w(std::cos(wall_rad), std::sin(wall_rad));
-  return std::acos(std::min(1.0, std::abs(w.dot(u))));  // 0: along the line, π/2: across
+  const LineFit fit = fit_line(near);  // the ASR stage's orthogonal fit (§3.1.8)
+  if (!fit.valid) return std::nullopt;
+  return std::acos(
+      std::min(1.0, std::abs(fit.direction.dot(u))));  // 0: along the line, π/2: across
 }
 
 }  // namespace cogmap::mapper::nav

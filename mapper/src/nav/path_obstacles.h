@@ -9,10 +9,6 @@
 
 namespace cogmap::mapper::nav {
 
-/// The principal direction (radians, modulo π) of a point set: the line a total least-squares
-/// fit would draw through it. The set must not be empty.
-double principal_direction_rad(const std::vector<Point2>& points);
-
 /// True when a sensed obstacle lies within `radius_m` of the segment from robot_m toward
 /// goal_m, between `from_m` along it and `max_m` (or radius_m beyond the goal, if nearer).
 bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
