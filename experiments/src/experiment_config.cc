@@ -156,9 +156,15 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "neighbour_increment",
                      "miss_decrement",
                      "em_odometry_prior",
+                     "em_prior_shrinks",
                      "em_drift_per_rad",
                      "em_smear_variance",
-                     "em_min_direction_sigma_deg"});
+                     "em_min_direction_sigma_deg",
+                     "glimpse",
+                     "glimpse_distance_m",
+                     "glimpse_turn_deg",
+                     "glimpse_min_wall_m",
+                     "glimpse_min_total_wall_m"});
   mapper::MapperOptions o;
   if (const auto g = block.child("grid")) {
     const std::string name = g->as<std::string>();
@@ -215,6 +221,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.min_room_duration_s = number_in(block, "min_room_duration_s", 0.0, 1e6, o.min_room_duration_s);
   o.max_room_extent_m = number_in(block, "max_room_extent_m", 1.0, 2000.0, o.max_room_extent_m);
   o.localizer.odometry_prior = block.get_or<bool>("em_odometry_prior", o.localizer.odometry_prior);
+  o.localizer.prior_shrinks = block.get_or<bool>("em_prior_shrinks", o.localizer.prior_shrinks);
   o.localizer.drift.per_rad_turned =
       number_in(block, "em_drift_per_rad", 0.0, 1.0, o.localizer.drift.per_rad_turned);
   o.localizer.smear_variance = block.get_or<bool>("em_smear_variance", o.localizer.smear_variance);
@@ -222,6 +229,15 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "em_min_direction_sigma_deg", 0.0, 45.0,
                 o.localizer.min_direction_sigma_rad * 180.0 / std::numbers::pi) *
       std::numbers::pi / 180.0;
+  o.glimpse.enabled = block.get_or<bool>("glimpse", o.glimpse.enabled);
+  o.glimpse.distance_m = number_in(block, "glimpse_distance_m", 0.5, 100.0, o.glimpse.distance_m);
+  o.glimpse.turn_rad = number_in(block, "glimpse_turn_deg", 10.0, 1e6,
+                                 o.glimpse.turn_rad * 180.0 / std::numbers::pi) *
+                       std::numbers::pi / 180.0;
+  o.glimpse.min_wall_length_m =
+      number_in(block, "glimpse_min_wall_m", 0.0, 100.0, o.glimpse.min_wall_length_m);
+  o.glimpse.min_total_wall_m =
+      number_in(block, "glimpse_min_total_wall_m", 0.0, 1000.0, o.glimpse.min_total_wall_m);
   if (const auto l = block.child("localization")) {
     const std::string s = l->as<std::string>();
     if (s == "em") {

@@ -44,6 +44,24 @@ Json nav_json(const NavMetrics& n) {
   return nav;
 }
 
+Json stage_json(const StageError& e) {
+  return {{"median_m", opt(e.median_m)}, {"p90_m", opt(e.p90_m)}, {"count", e.count}};
+}
+
+Json breakdown_json(const ErrorBreakdown& b) {
+  const HeadingBreakdown& h = b.heading;
+  return {{"grid", stage_json(b.grid)},
+          {"cleaned", stage_json(b.cleaned)},
+          {"points", stage_json(b.points)},
+          {"lines", stage_json(b.lines)},
+          {"heading",
+           {{"rooms", h.rooms},
+            {"entry_error_deg_mean_abs", opt(h.entry_error_deg_mean_abs)},
+            {"exit_error_deg_mean_abs", opt(h.exit_error_deg_mean_abs)},
+            {"within_room_drift_deg_mean_abs", opt(h.within_room_drift_deg_mean_abs)},
+            {"within_room_drift_deg_max_abs", opt(h.within_room_drift_deg_max_abs)}}}};
+}
+
 }  // namespace
 
 std::string metrics_json_text(const RunMetrics& m) {
@@ -90,6 +108,7 @@ std::string metrics_json_text(const RunMetrics& m) {
          {{"odometry", l.ate_rmse_odometry_m}, {"corrected", l.ate_rmse_corrected_m}}},
         {"frames", l.frames}};
   }
+  if (m.error_breakdown) j["error_breakdown"] = breakdown_json(*m.error_breakdown);
   j["readings"] = {{"used", m.readings_used},
                    {"rejected",
                     {{"not_finite", m.rejected.not_finite},

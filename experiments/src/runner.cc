@@ -7,6 +7,7 @@
 #include <regex>
 #include <system_error>
 
+#include "cogmap/experiments/error_breakdown.h"
 #include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/experiments/ros_map.h"
 #include "cogmap/experiments/run_directory.h"
@@ -111,6 +112,29 @@ NavMetrics nav_metrics(const mapper::nav::Controller& controller, const Controll
   return nav;
 }
 
+/// figures/map_error.png: the corrected map coloured by its samples' distance to the truth.
+void draw_map_error(const std::string& title, const std::vector<mapper::Segment>& map,
+                    const GroundTruth& truth, const ErrorBreakdownBuilder& breakdown,
+                    const RunMetrics& m, const fs::path& out) {
+  render::MapErrorFigure fig;
+  fig.title = "map error (distance to the true walls)";
+  if (m.map && m.map->wall_error_median_m && m.map->wall_error_p90_m) {
+    char buf[96];
+    std::snprintf(buf, sizeof(buf), "map error: median %.3f m, p90 %.3f m",
+                  *m.map->wall_error_median_m, *m.map->wall_error_p90_m);
+    fig.title = buf;
+  }
+  fig.caption = title + ", after localisation";
+  fig.true_surfaces = truth.surfaces;
+  // The same sampling as the map metrics, so the colours are the numbers in the title.
+  for (const ErrorPiece& p :
+       error_pieces(map, breakdown.truth_index(), MapMetricsOptions{}.sample_step_m)) {
+    fig.pieces.push_back(p.piece);
+    fig.error_m.push_back(p.error_m);
+  }
+  render::write_map_error_figure(fig, out / "figures" / "map_error.png");
+}
+
 }  // namespace
 
 void clear_run_outputs(const fs::path& dir) {
@@ -162,10 +186,21 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   mapper::io::DirectoryAsrStore store(out / "asrs", durability);
   mapper::Mapper mapper(experiment.mapper, geometry, store, start);
   const double occupied_threshold = experiment.mapper.builder.occupied_threshold;
-  Clock::duration figure_time{0};
+  Clock::duration figure_time{0};  // figures and the error breakdown: not the frame loop's time
+  // The per-stage error needs the room's grids, which live only for the listener call.
+  std::optional<ErrorBreakdownBuilder> breakdown;
+  if (truth) breakdown.emplace(truth->surfaces, occupied_threshold);
+  bool closing_run = false;  // mapper.finish() closes the last room after the last row
   mapper.set_room_listener([&](const mapper::Asr& asr, const mapper::AsrTrace& trace) {
     const std::string stem = room_stem(asr.id);
     write_ros_map(trace.raw, occupied_threshold, out, "grid_" + stem, durability);
+    if (breakdown) {
+      const auto t0 = Clock::now();
+      breakdown->add_room(asr.pose, trace);
+      breakdown->add_room_span(
+          {asr.start_time_s, asr.end_time_s, asr.pose.theta_rad, !closing_run});
+      figure_time += Clock::now() - t0;
+    }
     if (figures) {
       const auto t0 = Clock::now();
       render::write_room_stages_figure(trace, experiment.name + ": room " + std::to_string(asr.id),
@@ -204,6 +239,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
           nav_input(experiment.controller, seen, frame->true_pose, mapper, geometry)));
     }
     robot.stop();
+    closing_run = true;
     mapper.finish();
   } catch (const std::exception& e) {
     try {
@@ -283,6 +319,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, mo);
       m.map_odometry = evaluate_map(segments_of(odometry), truth->surfaces, visible, mo);
       m.localization = evaluate_trajectory(session.rows);
+      m.error_breakdown = breakdown->finish(session.rows);
       add_contacts(m.nav, session.rows, truth->surfaces, geometry);
     }
 
@@ -309,6 +346,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
         fig.room_labels.push_back(std::to_string(id));
       }
       render::write_map_figure(fig, out / "figures" / "map_before_after.png");
+      if (truth) draw_map_error(fig.title, fig.map_corrected, *truth, *breakdown, m, out);
       render::write_graph_figure(mapper.graph(), experiment.name + ": room graph",
                                  out / "figures" / "graph.png");
     }

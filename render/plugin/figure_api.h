@@ -8,7 +8,7 @@
 namespace cogmap::render::plugin {
 
 /// Raise when any signature below or a struct passed through it changes.
-inline constexpr int kFigureApiVersion = 1;
+inline constexpr int kFigureApiVersion = 2;
 
 /// The plugin's one exported symbol: `const FigureApi* cogmap_render_figure_api()`.
 inline constexpr const char* kEntryPoint = "cogmap_render_figure_api";
@@ -23,6 +23,7 @@ struct FigureApi {
   unsigned long style_size = sizeof(Style);
   unsigned long map_figure_size = sizeof(MapFigure);
   unsigned long plot_series_size = sizeof(PlotSeries);
+  unsigned long map_error_figure_size = sizeof(MapErrorFigure);
   void (*room_stages)(const mapper::AsrTrace&, const std::string&, const std::filesystem::path&,
                       const Style&) = nullptr;
   void (*map)(const MapFigure&, const std::filesystem::path&, const Style&) = nullptr;
@@ -33,6 +34,7 @@ struct FigureApi {
   void (*metric_plot)(const std::string&, const std::string&, const std::string&,
                       const std::vector<PlotSeries>&, const std::filesystem::path&,
                       const Style&) = nullptr;
+  void (*map_error)(const MapErrorFigure&, const std::filesystem::path&, const Style&) = nullptr;
 };
 
 }  // namespace cogmap::render::plugin

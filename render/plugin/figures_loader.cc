@@ -36,7 +36,8 @@ const FigureApi* load_plugin() {
   const FigureApi* api = entry != nullptr ? entry() : nullptr;
   if (api == nullptr || api->version != plugin::kFigureApiVersion ||
       api->style_size != sizeof(Style) || api->map_figure_size != sizeof(MapFigure) ||
-      api->plot_series_size != sizeof(PlotSeries)) {
+      api->plot_series_size != sizeof(PlotSeries) ||
+      api->map_error_figure_size != sizeof(MapErrorFigure)) {
     throw RendererUnavailable("the figure renderer " + file +
                               " comes from another cogmap build (figure API mismatch)" + advice);
   }
@@ -61,6 +62,11 @@ void write_room_stages_figure(const mapper::AsrTrace& trace, const std::string& 
 void write_map_figure(const MapFigure& figure, const std::filesystem::path& png,
                       const Style& style) {
   api().map(figure, png, style);
+}
+
+void write_map_error_figure(const MapErrorFigure& figure, const std::filesystem::path& png,
+                            const Style& style) {
+  api().map_error(figure, png, style);
 }
 
 void write_graph_figure(const mapper::AsrGraph& graph, const std::string& title,

@@ -12,6 +12,7 @@ const FigureApi kApi = [] {
   FigureApi api;
   api.room_stages = &r::write_room_stages_figure;
   api.map = &r::write_map_figure;
+  api.map_error = &r::write_map_error_figure;
   api.graph =
       static_cast<void (*)(const cogmap::mapper::AsrGraph&, const std::string&,
                            const std::filesystem::path&, const r::Style&)>(&r::write_graph_figure);

@@ -57,12 +57,19 @@ TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
   EXPECT_LT(map["compression_ratio"].get<double>(), 0.05);  // polylines << grids (Table 4.2)
   EXPECT_LT(a["localization"]["ate_rmse_m"]["corrected"].get<double>(), 1.0);
   EXPECT_LT(a["frames"].get<int>(), 3000);  // the route ends before duration_s (300 s)
+  // The per-stage breakdown: every stage measured, the fitted lines as many samples as the map.
+  const Json& bd = a["error_breakdown"];
+  for (const char* stage : {"grid", "cleaned", "points", "lines"}) {
+    EXPECT_GT(bd[stage]["count"].get<int>(), 0) << stage;
+  }
+  EXPECT_EQ(bd["lines"]["count"].get<int>(), map["error_samples"].get<int>());
+  EXPECT_EQ(bd["heading"]["rooms"].get<int>(), 2);
 
   // Same experiment, same seed: every block except timing is identical bit for bit, and so
   // are the trajectory and the map.
   const Json b = run_once("b");
-  for (const char* key :
-       {"asr_count", "map", "map_odometry", "localization", "rooms", "readings", "frames"}) {
+  for (const char* key : {"asr_count", "map", "map_odometry", "localization", "error_breakdown",
+                          "rooms", "readings", "frames"}) {
     EXPECT_EQ(a[key].dump(), b[key].dump()) << key;
   }
   const fs::path dir_b = fs::path(::testing::TempDir()) / "two_rooms_b";

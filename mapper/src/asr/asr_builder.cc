@@ -1,5 +1,6 @@
 // build_room_polylines: the room pipeline of thesis §3.1.5-3.1.8 (Fig. 3.3 b-g) on one grid.
 
+#include <algorithm>
 #include <vector>
 
 #include "cogmap/mapper/asr/asr_builder.h"
@@ -50,6 +51,21 @@ AsrTrace build_room_polylines(const HistogramGrid& grid, const std::vector<Point
     trace.rejected.insert(trace.rejected.end(), fit.rejected.begin(), fit.rejected.end());
   }
   return trace;
+}
+
+std::vector<Polyline> accepted_walls(const AsrTrace& trace) {
+  std::vector<Polyline> out;
+  for (const Polyline& line : trace.fitted) {
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const Point2& a = line[i - 1];
+      const Point2& b = line[i];
+      const bool rejected = std::any_of(
+          trace.rejected.begin(), trace.rejected.end(),
+          [&](const Segment& s) { return (s.a == a && s.b == b) || (s.a == b && s.b == a); });
+      if (!rejected) out.push_back({a, b});
+    }
+  }
+  return out;
 }
 
 }  // namespace cogmap::mapper

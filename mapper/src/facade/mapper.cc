@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deque>
 
+#include "cogmap/mapper/localization/glimpse_heading.h"
 #include "facade/room_recorder.h"
 
 namespace cogmap::mapper {
@@ -17,28 +18,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+AsrBuilderOptions builder_with_range(AsrBuilderOptions builder, const RobotGeometry& robot) {
+  builder.max_sonar_range_m = robot.sonar_max_range_m;
+  return builder;
+}
+
 /// Linear interpolation of two poses (heading along the shorter arc).
 Pose2 interpolate(const Pose2& a, const Pose2& b, double t) {
   return {a.x_m + t * (b.x_m - a.x_m), a.y_m + t * (b.y_m - a.y_m),
           wrap_angle_rad(a.theta_rad + t * wrap_angle_rad(b.theta_rad - a.theta_rad))};
-}
-
-/// The segments of a room's walls whose least-squares fit was accepted (§3.1.8), each as a
-/// two-vertex polyline. A rejected fit stays in the wall as its Douglas-Peucker segment (so the
-/// map keeps it) but is, by the fit's own test, no straight line: it carries no direction.
-std::vector<Polyline> accepted_walls(const AsrTrace& trace) {
-  std::vector<Polyline> out;
-  for (const Polyline& line : trace.fitted) {
-    for (std::size_t i = 1; i < line.size(); ++i) {
-      const Point2& a = line[i - 1];
-      const Point2& b = line[i];
-      const bool rejected = std::any_of(
-          trace.rejected.begin(), trace.rejected.end(),
-          [&](const Segment& s) { return (s.a == a && s.b == b) || (s.a == b && s.b == a); });
-      if (!rejected) out.push_back({a, b});
-    }
-  }
-  return out;
 }
 
 RejectedReadings operator+(const RejectedReadings& a, const RejectedReadings& b) {
@@ -57,6 +45,12 @@ struct Mapper::Impl {
   internal::RoomRecorder room;
   std::unique_ptr<AsrBoundaryDetector> boundary;
   Localizer localizer;
+  GlimpseHeading glimpse;
+  /// This room's earlier glimpses' walls (world, corrected): EM reference besides `resident`.
+  std::deque<std::vector<Polyline>> glimpse_walls;
+  /// Variance of the heading error left after the last glimpse or room correction, rad².
+  double glimpse_variance_rad2 = 0.0;
+  std::optional<Pose2> previous_odometry;
   AsrGraph graph;
   MapperStats stats;
   RejectedReadings rejected_in_finished_rooms;
@@ -84,7 +78,13 @@ struct Mapper::Impl {
         boundary(opts.boundary == BoundaryKind::kDoorway
                      ? make_doorway_detector(opts.doorway, geometry)
                      : make_distance_detector(opts.distance)),
-        localizer(opts.localizer) {
+        localizer(opts.localizer),
+        // The glimpse grid exists only when glimpses are on (a second grid costs memory).
+        glimpse(opts.glimpse,
+                opts.glimpse.enabled ? make_grid_updater(opts.grid, opts.grid_options, geometry)
+                                     : nullptr,
+                builder_with_range(opts.builder, geometry), opts.localizer,
+                opts.grid_options.cell_scale_mm / 2000.0) {
     options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
   }
 
@@ -102,15 +102,53 @@ struct Mapper::Impl {
       if (last_estimate && span_s > 0.0) {
         t = std::clamp((reading.time_s - last_time_s) / span_s, 0.0, 1.0);
       }
-      if (room.grid().integrate(interpolate(previous, pose, t), reading)) ++stats.readings_used;
+      const Pose2 at = interpolate(previous, pose, t);
+      if (room.grid().integrate(at, reading)) ++stats.readings_used;
+      if (options.glimpse.enabled) glimpse.integrate(at, reading);
     }
     stats.rejected = rejected_in_finished_rooms + room.grid().rejected();
     stats.peak_grid_bytes = std::max(stats.peak_grid_bytes, room.grid().grid_bytes());
   }
 
+  /// A glimpse is due: measure its rotation against the mapped walls and turn the estimate.
+  void finish_glimpse(const Pose2& pose);
+
   std::optional<int> finish_room(double time_s, const std::optional<BoundaryEvent>& leaving);
   Localization localize(const Asr& asr, const AsrTrace& trace) const;
 };
+
+void Mapper::Impl::finish_glimpse(const Pose2& pose) {
+  std::vector<Polyline> reference;
+  for (const auto* source : {&resident_accepted, &glimpse_walls}) {
+    for (const std::vector<Polyline>& walls : *source) {
+      reference.insert(reference.end(), walls.begin(), walls.end());
+    }
+  }
+  const double drift_sigma =
+      heading_drift_sigma_rad(options.localizer.drift, glimpse.turned_rad(), glimpse.travelled_m());
+  const double prior_var = glimpse_variance_rad2 + drift_sigma * drift_sigma;
+  const auto em_start = std::chrono::steady_clock::now();
+  GlimpseFix fix = glimpse.measure(reference, RotationPrior{std::sqrt(prior_var)});
+  stats.localization_time_s += seconds_since(em_start);
+  const Localization& l = fix.localization;
+  glimpse_variance_rad2 = l.applied ? (1.0 - l.gain) * prior_var : prior_var;
+  if (l.applied && l.rotation_rad != 0.0) {
+    const Pose2 turn = rotation_about(pose.translation(), l.rotation_rad);
+    correction = turn.compose(correction);
+    for (Polyline& line : fix.walls) {
+      for (Point2& p : line) p = turn.transform(p);
+    }
+    ++stats.glimpse_corrections;
+    stats.glimpse_correction_abs_rad += std::abs(l.rotation_rad);
+  }
+  ++stats.glimpses;
+  // A glimpse gated out as an outlier would teach the reference its error; the first one of a
+  // run (nothing to compare with) is the reference.
+  if (l.applied || reference.empty()) {
+    glimpse_walls.push_back(std::move(fix.walls));
+    if (glimpse_walls.size() > options.glimpse.reference_glimpses) glimpse_walls.pop_front();
+  }
+}
 
 Localization Mapper::Impl::localize(const Asr& asr, const AsrTrace& trace) const {
   // Only walls whose least-squares fit was accepted (§3.1.8) carry a direction: the rejected
@@ -171,7 +209,12 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
     stats.localization_time_s += seconds_since(em_start);
     if (options.localizer.odometry_prior && std::isfinite(fix.prior_sigma_rad)) {
       const double prior_var = fix.prior_sigma_rad * fix.prior_sigma_rad;
-      heading_variance_rad2 = fix.applied ? (1.0 - fix.gain) * prior_var : prior_var;
+      // A correction applied whole leaves the measurement's own uncertainty.
+      const double after_var =
+          options.localizer.prior_shrinks
+              ? (1.0 - fix.gain) * prior_var
+              : std::min(prior_var, fix.measurement_sigma_rad * fix.measurement_sigma_rad);
+      heading_variance_rad2 = fix.applied ? after_var : prior_var;
     }
     if (fix.applied) {
       room_correction = rotation_about(asr.reference_point, fix.rotation_rad);
@@ -216,6 +259,11 @@ void Mapper::set_room_listener(RoomListener listener) { impl_->listener = std::m
 std::optional<int> Mapper::process(const SensorFrame& frame) {
   Impl& m = *impl_;
   ++m.stats.frames;
+  const double turned_rad =
+      m.previous_odometry
+          ? wrap_angle_rad(frame.odometry.theta_rad - m.previous_odometry->theta_rad)
+          : 0.0;
+  m.previous_odometry = frame.odometry;
   Pose2 pose = m.estimate(frame.odometry);
   if (!m.started) {
     // Room 0 is entered at the known start pose.
@@ -223,9 +271,15 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
                  std::nullopt);
     m.room_lo = m.room_hi = pose.translation();
     m.started = true;
+    if (m.options.glimpse.enabled) m.glimpse.begin(pose);
   }
   m.room.visit(pose);
   m.integrate(frame, pose);
+  if (m.options.glimpse.enabled && m.glimpse.visit(pose, turned_rad)) {
+    m.finish_glimpse(pose);
+    pose = m.estimate(frame.odometry);
+    m.glimpse.begin(pose);
+  }
   m.room_lo = m.room_lo.cwiseMin(pose.translation());
   m.room_hi = m.room_hi.cwiseMax(pose.translation());
 
@@ -245,6 +299,11 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
                      {}};
     m.room.start(m.next_id++, frame.time_s, pose, entry, finished);
     m.room_lo = m.room_hi = pose.translation();
+    if (m.options.glimpse.enabled) {
+      // The finished room's walls are the reference now; its glimpses were part of it.
+      m.glimpse_walls.clear();
+      m.glimpse.begin(pose);
+    }
   }
   m.last_estimate = pose;
   m.last_time_s = frame.time_s;

@@ -147,6 +147,9 @@ TEST(Mapper, DistanceBoundariesSplitACorridorAndEmUndoesHeadingDrift) {
     options.boundary = BoundaryKind::kDistance;
     options.distance.asr_distance_m = 4.0;
     options.localization = kind;
+    // 1°/m is ten times the drift model's straight-line walk: the odometry-prior gate would
+    // refuse most of it (13° of the 22° stay). This test is about the thesis's EM itself.
+    options.localizer.odometry_prior = false;
     MemoryAsrStore store;
     Mapper mapper(options, robot, store, Pose2{});
     for (const SensorFrame& f : frames) mapper.process(f);
@@ -163,6 +166,54 @@ TEST(Mapper, DistanceBoundariesSplitACorridorAndEmUndoesHeadingDrift) {
   EXPECT_NEAR(last_odometry.theta_rad, 22.0 * drift, 1e-6);
   EXPECT_LT(std::abs(last_em.theta_rad), std::abs(last_odometry.theta_rad) / 3.0);
   EXPECT_LT(median_wall_error(map_em, walls), median_wall_error(map_odometry, walls));
+}
+
+/// One 22 m corridor mapped as a single room (no doorway), odometry drifting `drift_rad_per_m`:
+/// the final heading estimate and the map, with or without in-room glimpses.
+struct CorridorRun {
+  double final_heading_rad = 0.0;
+  double median_wall_error_m = 0.0;
+  MapperStats stats;
+};
+
+CorridorRun map_one_room_corridor(bool glimpses, double drift_rad_per_m) {
+  const RobotGeometry robot = p2at_geometry();
+  const std::vector<Segment> walls{{{-1.0, -1.2}, {25.0, -1.2}}, {{-1.0, 1.2}, {25.0, 1.2}}};
+  const auto frames = drive({{0.0, 0.0}, {22.0, 0.0}}, walls, robot, drift_rad_per_m);
+  MapperOptions options;
+  options.glimpse.enabled = glimpses;
+  MemoryAsrStore store;
+  Mapper mapper(options, robot, store, Pose2{});
+  for (const SensorFrame& f : frames) mapper.process(f);
+  CorridorRun out;
+  out.final_heading_rad = mapper.pose_estimate().theta_rad;
+  mapper.finish();
+  out.median_wall_error_m = median_wall_error(mapper.master_map(true), walls);
+  out.stats = mapper.stats();
+  return out;
+}
+
+TEST(Mapper, GlimpsesAreOffByDefault) { EXPECT_FALSE(MapperOptions{}.glimpse.enabled); }
+
+TEST(Mapper, GlimpsesUndoHeadingDriftInsideOneRoom) {
+  const double drift = 0.5 * std::numbers::pi / 180.0;  // 0.5° per metre: 11° over the room
+  const CorridorRun thesis = map_one_room_corridor(false, drift);
+  const CorridorRun glimpses = map_one_room_corridor(true, drift);
+  EXPECT_EQ(thesis.stats.rooms, 1u);
+  EXPECT_EQ(glimpses.stats.rooms, 1u);
+  // Without glimpses nothing corrects inside the room: the estimate is odometry, 11° off.
+  EXPECT_NEAR(thesis.final_heading_rad, 22.0 * drift, 1e-6);
+  // 3 m glimpses: 7 of them, 6 measured against the ones before. Each sees 1.5° of new drift
+  // and the drift keeps growing after the last one: measured 2.3° left of 11°.
+  EXPECT_EQ(glimpses.stats.glimpse_corrections, 6u);
+  EXPECT_LT(std::abs(glimpses.final_heading_rad), 3.0 * std::numbers::pi / 180.0);
+}
+
+TEST(Mapper, GlimpsesLeaveAnUndriftedHeadingAlone) {
+  const CorridorRun glimpses = map_one_room_corridor(true, 0.0);
+  EXPECT_GE(glimpses.stats.glimpses, 5u);
+  // Straight walls seen without drift measure no rotation: the estimate stays on odometry.
+  EXPECT_LT(std::abs(glimpses.final_heading_rad), 0.2 * std::numbers::pi / 180.0);
 }
 
 TEST(Mapper, ARoomLargerThanTheExtentLimitEnds) {

@@ -5,6 +5,7 @@
 // window edge, edge cell included.
 
 #include <algorithm>
+#include <span>
 
 #include "grid/histogram_ops.h"
 #include "grid/reading_filter.h"
@@ -73,6 +74,9 @@ class MhimmUpdater final : public GridUpdater {
 
   HistogramGrid histogram() const override { return cells_; }
   float histogram_at(CellIndex cell) const override { return cells_.get(cell); }
+  std::span<const float> histogram_row(int y) const override {
+    return {cells_.row(y), static_cast<std::size_t>(cells_.width())};
+  }
   const GridGeometry& geometry() const override { return cells_.geometry(); }
   std::size_t grid_bytes() const override { return cells_.bytes(); }
   const RejectedReadings& rejected() const override { return rejected_; }

@@ -166,7 +166,9 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
 
   // Posterior of the rotation given the odometry prior N(0, prior²) and the EM measurement
   // N(measured, meas²): mean = gain·measured with gain = prior² / (prior² + meas²).
-  out.gain = has_prior ? (std::isfinite(var_meas) ? var_prior / (var_prior + var_meas) : 0.0) : 1.0;
+  out.gain = has_prior && options_.prior_shrinks
+                 ? (std::isfinite(var_meas) ? var_prior / (var_prior + var_meas) : 0.0)
+                 : 1.0;
   out.applied = std::abs(out.measured_rotation_rad) <= options_.max_correction_rad;
   if (has_prior && out.applied) {
     const double innovation_sd = std::sqrt(var_prior + var_meas);

@@ -52,6 +52,7 @@ TEST(RotationPrior, TightPriorShrinksAndGatesTheMeasurement) {
   const auto current = testing::noisy_scene(6.0 * kDeg, 1.0 * kDeg, 0.2, rng);
   LocalizerOptions options;
   options.smear_variance = false;  // the smear term alone would cap the gain at 3/4
+  options.prior_shrinks = true;
   const Localizer localizer{options};
   const Localization wide = localizer.estimate(reference, current, RotationPrior{20.0 * kDeg});
   ASSERT_TRUE(wide.applied);
@@ -66,6 +67,26 @@ TEST(RotationPrior, TightPriorShrinksAndGatesTheMeasurement) {
   EXPECT_FALSE(tight.applied);
   EXPECT_EQ(tight.rotation_rad, 0.0);
   EXPECT_NEAR(tight.measured_rotation_rad, wide.measured_rotation_rad, 1e-12);
+}
+
+TEST(RotationPrior, GateOnlyAppliesWhatPassesWholeAndRefusesOutliers) {
+  std::mt19937_64 rng(6);
+  const auto reference = testing::noisy_scene(0.0, 1.0 * kDeg, 0.2, rng);
+  const auto current = testing::noisy_scene(6.0 * kDeg, 1.0 * kDeg, 0.2, rng);
+  LocalizerOptions options;
+  options.smear_variance = false;
+  ASSERT_FALSE(options.prior_shrinks);  // the default: the prior is only the gate
+  const Localizer localizer{options};
+  // 6° is within 3 sd of a 3° prior: applied exactly as measured, not shrunk.
+  const Localization medium = localizer.estimate(reference, current, RotationPrior{3.0 * kDeg});
+  ASSERT_TRUE(medium.applied);
+  EXPECT_EQ(medium.gain, 1.0);
+  EXPECT_EQ(medium.rotation_rad, medium.measured_rotation_rad);
+  EXPECT_NEAR(medium.rotation_rad, -6.0 * kDeg, 0.5 * kDeg);
+  // Beyond 3 sd of a 0.5° prior: refused, the pose is left alone.
+  const Localization tight = localizer.estimate(reference, current, RotationPrior{0.5 * kDeg});
+  EXPECT_FALSE(tight.applied);
+  EXPECT_EQ(tight.rotation_rad, 0.0);
 }
 
 }  // namespace

@@ -39,6 +39,15 @@ class ObstacleField {
   std::vector<float> cells_;
   std::vector<float> near_grid_;  // room-grid cells nearer than grid_min_range_m
   std::vector<float> echoes_;     // the memory's echoes, summed per cell
+  // The slots this build wrote in each array (the next build resets them to -1; a slot may
+  // be listed more than once).
+  std::vector<int> cell_slots_, near_slots_, echo_slots_;
+  // Per column x and row y of the box: the cell centre's offset from `center` (exactly
+  // center_of(c) - center) and its square, so a cell's squared distance is dx2_[x] + dy2_[y].
+  std::vector<double> dx_, dy_, dx2_, dy2_;
+  // Per column of the box: the rows [first, last] that may hold a point (first > last: none).
+  std::vector<int> column_first_, column_last_;
+  std::vector<float> row_values_;  // one grid row, for grids without histogram_row
   std::vector<ObstaclePoint> points_;
 
   /// The index of `c` in the box, or -1 outside it.

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cogmap/experiments/error_breakdown.h"
 #include "cogmap/experiments/metrics.h"
 #include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/mapper/grid/grid_updater.h"
@@ -42,6 +43,7 @@ struct RunMetrics {
   std::optional<MapAccuracy> map_odometry;  ///< before localisation; needs ground truth
   MemoryMetrics memory;
   std::optional<LocalizationAccuracy> localization;  ///< needs ground truth
+  std::optional<ErrorBreakdown> error_breakdown;     ///< per-stage error; needs ground truth
   std::size_t readings_used = 0;
   mapper::RejectedReadings rejected;
   std::vector<RoomReport> rooms;

@@ -14,6 +14,7 @@
 #include "cogmap/mapper/graph/asr_graph.h"
 #include "cogmap/mapper/graph/asr_store.h"
 #include "cogmap/mapper/grid/grid_updater.h"
+#include "cogmap/mapper/localization/glimpse_heading.h"
 #include "cogmap/mapper/localization/localizer.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
 #include "cogmap/mapper/seam/sensor_frame.h"
@@ -29,6 +30,7 @@ struct MapperOptions {
   DistanceOptions distance;
   LocalizationKind localization = LocalizationKind::kEm;
   LocalizerOptions localizer;
+  GlimpseOptions glimpse;            ///< in-room heading correction by short glimpses
   double min_room_duration_s = 2.0;  ///< boundaries closer in time than this are ignored
   /// A room whose path spans more than this (metres, either axis) ends there, as a distance cut
   /// would: it bounds a room grid to (extent + 2 x sonar range)^2, 210 m -> 4.4 M cells of 10 cm
@@ -46,6 +48,9 @@ struct MapperStats {
   double build_time_s = 0.0;         ///< CPU spent in the room -> ASR pipeline
   double localization_time_s = 0.0;  ///< CPU spent in EM
   std::size_t peak_grid_bytes = 0;
+  std::size_t glimpses = 0;                 ///< glimpses measured (in-room heading correction)
+  std::size_t glimpse_corrections = 0;      ///< of which EM applied a rotation
+  double glimpse_correction_abs_rad = 0.0;  ///< Σ |glimpse rotations|
 };
 
 class Mapper {

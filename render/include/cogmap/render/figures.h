@@ -48,6 +48,23 @@ struct MapFigure {
 void write_map_figure(const MapFigure& figure, const std::filesystem::path& png,
                       const Style& style = {});
 
+/// The corrected map coloured by its error (figures/map_error.png), world frame, metres.
+struct MapErrorFigure {
+  std::string title;                           ///< figure title (short: one panel wide)
+  std::string caption;                         ///< panel caption, e.g. the experiment and seed
+  std::vector<mapper::Segment> true_surfaces;  ///< ground truth, drawn thin grey underneath
+  /// The map cut into the pieces its metric samples stand for (docs/metrics.md, "Sampling").
+  std::vector<mapper::Segment> pieces;
+  std::vector<double> error_m;  ///< per piece: its sample's distance to the nearest true surface
+};
+
+/// One panel: every map piece in the colour of its error on the style's scale (green at or
+/// below error_good_m, yellow at error_mid_m, red at or above error_bad_m) over the true
+/// surfaces, with the scale in metres as the legend. Throws std::invalid_argument when
+/// pieces and error_m differ in length.
+void write_map_error_figure(const MapErrorFigure& figure, const std::filesystem::path& png,
+                            const Style& style = {});
+
 /// The room graph (Fig. 4.1b): nodes at their reference points, numbered, edges drawn from node
 /// to node through the exit they share. World frame.
 void write_graph_figure(const mapper::AsrGraph& graph, const std::string& title,

@@ -42,6 +42,15 @@ struct Style {
   Rgb graph_edge{0.25f, 0.25f, 0.25f};      ///< room-graph edges
   Rgb exit_marker{0.88f, 0.12f, 0.10f};     ///< exits (doorways) in the room graph
 
+  // The map-error scale (figures/map_error.png): a map sample's distance to the nearest true
+  // surface, good at or below error_good_m, bad at or above error_bad_m, linear in between.
+  double error_good_m = 0.05;           ///< at or below: error_good colour
+  double error_mid_m = 0.15;            ///< error_mid colour
+  double error_bad_m = 0.30;            ///< at or above: error_bad colour
+  Rgb error_good{0.10f, 0.65f, 0.20f};  ///< green
+  Rgb error_mid{0.95f, 0.80f, 0.05f};   ///< yellow
+  Rgb error_bad{0.85f, 0.10f, 0.10f};   ///< red
+
   // Grid colouring on the HIMM scale (mapper/grid/grid.h): unexplored mid-grey, seen-empty
   // light, occupied darker the higher the count, robot path green.
   Rgb grid_unexplored{0.62f, 0.62f, 0.62f};  ///< H = 0

@@ -43,4 +43,9 @@ struct AsrTrace {
 AsrTrace build_room_polylines(const HistogramGrid& grid, const std::vector<Point2>& robot_path,
                               const AsrBuilderOptions& options);
 
+/// The segments of a room's walls whose least-squares fit was accepted (§3.1.8), each as a
+/// two-vertex polyline. A rejected fit stays in the wall as its Douglas-Peucker segment (so the
+/// map keeps it) but is, by the fit's own test, no straight line: it carries no direction.
+std::vector<Polyline> accepted_walls(const AsrTrace& trace);
+
 }  // namespace cogmap::mapper

@@ -38,6 +38,11 @@ class Grid {
   }
   T* data() { return cells_.data(); }
   const T* data() const { return cells_.data(); }
+  /// Row y (0 <= y < height()): width() values, x ascending, without a bounds check per cell.
+  const T* row(int y) const {
+    assert(y >= 0 && y < height());
+    return cells_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width());
+  }
   std::size_t bytes() const { return cells_.size() * sizeof(T); }
 
   /// Grows the grid (never shrinks) so every point within `margin_m` of `p` lies inside.

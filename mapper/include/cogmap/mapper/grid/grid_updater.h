@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -80,6 +81,16 @@ class GridUpdater {
 
   /// One cell on the HIMM scale without copying the grid (for obstacle avoidance).
   virtual float histogram_at(CellIndex cell) const = 0;
+
+  /// Row `y` (0 <= y < geometry().height()) on the HIMM scale, geometry().width() values
+  /// with x ascending, read in place: the same values as histogram_at, one virtual call per
+  /// row instead of per cell. Only updaters that store their cells on the HIMM scale (MHIMM)
+  /// provide it; the others return an empty span and are read with histogram_at. Valid until
+  /// the next non-const call.
+  virtual std::span<const float> histogram_row(int y) const {
+    static_cast<void>(y);
+    return {};
+  }
 
   virtual const GridGeometry& geometry() const = 0;
 

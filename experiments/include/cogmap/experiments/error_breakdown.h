@@ -1,0 +1,120 @@
+#pragma once
+/// Where the map error comes from (metrics.json `error_breakdown`, docs/metrics.md): the
+/// distance to the nearest true surface of every stage of the room pipeline (raw grid, cleaned
+/// grid, extracted points, fitted lines), all placed in the corrected world frame, and the
+/// heading error split into what a room starts with and what drifts in while it is mapped.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "cogmap/experiments/metrics.h"
+#include "cogmap/experiments/segment_index.h"
+#include "cogmap/mapper/asr/asr_builder.h"
+#include "cogmap/mapper/grid/grid.h"
+#include "cogmap/mapper/seam/geometry.h"
+#include "cogmap/mapper/seam/pose2.h"
+
+namespace cogmap::experiments {
+
+/// Distance statistics of one stage's points to the nearest true surface.
+struct StageError {
+  std::optional<double> median_m;  ///< empty when the stage has no point
+  std::optional<double> p90_m;
+  std::size_t count = 0;  ///< points (cells, vertices or line samples) measured
+};
+
+/// Median and p90 (metrics.h `quantile`) of `distances_m`; `distances_m` is reordered.
+StageError stage_error(std::vector<double>& distances_m);
+
+/// Centres of the cells of `grid` that the ASR builder counts as occupied (H > ε, as
+/// clean_map and extract_points test it), mapped by `room_to_world`.
+std::vector<mapper::Point2> occupied_cells_world(const mapper::HistogramGrid& grid,
+                                                 double occupied_threshold,
+                                                 const mapper::Pose2& room_to_world);
+
+/// The distance of every point to the nearest segment of `truth`.
+std::vector<double> nearest_distances_m(const SegmentIndex& truth,
+                                        std::span<const mapper::Point2> points);
+
+/// One piece of a map segment, as the map metrics sample it (sample_segments), and the distance
+/// of its midpoint (the sample) to the nearest true surface: what figures/map_error.png colours.
+struct ErrorPiece {
+  mapper::Segment piece;
+  double error_m = 0.0;
+};
+std::vector<ErrorPiece> error_pieces(std::span<const mapper::Segment> map,
+                                     const SegmentIndex& truth, double sample_step_m);
+
+/// One room's part in the heading breakdown. The room's map was drawn in the estimate frame as
+/// it stood while the robot was in the room (its local frame; in-room corrections included), and
+/// asr.pose turns that frame into the corrected world.
+struct RoomSpan {
+  double start_time_s = 0.0;
+  double end_time_s = 0.0;
+  double room_to_world_rad = 0.0;  ///< asr.pose.θ: the room's correction on leaving it
+  /// True when the room ended at a boundary inside a frame: that frame's row was recorded after
+  /// the mapper applied the room's correction, so its estimate is already in the corrected world.
+  /// False for the room the end of the run closed (mapper.finish(), after the last row).
+  bool last_row_corrected = true;
+};
+
+/// The heading errors of one room, degrees, wrapped to (−180, 180]: the heading the room's
+/// corrected map was drawn with (estimate turned by asr.pose) minus the true heading, at the
+/// room's first and last frame with truth.
+struct RoomHeadingError {
+  double entry_deg = 0.0;
+  double exit_deg = 0.0;
+};
+
+/// Empty when no row in [start, end] has ground truth. `rows` are in time order.
+std::optional<RoomHeadingError> room_heading_error(std::span<const TrajectoryRow> rows,
+                                                   const RoomSpan& room);
+
+/// The heading block: means over rooms with truth; empty optionals when there is none.
+struct HeadingBreakdown {
+  std::size_t rooms = 0;
+  std::optional<double> entry_error_deg_mean_abs;
+  std::optional<double> exit_error_deg_mean_abs;
+  std::optional<double> within_room_drift_deg_mean_abs;  ///< mean |wrap(exit − entry)|
+  std::optional<double> within_room_drift_deg_max_abs;
+};
+HeadingBreakdown heading_breakdown(std::span<const TrajectoryRow> rows,
+                                   std::span<const RoomSpan> rooms);
+
+/// metrics.json `error_breakdown`.
+struct ErrorBreakdown {
+  StageError grid;     ///< occupied cells of the raw room grids
+  StageError cleaned;  ///< occupied cells of the cleaned grids
+  StageError points;   ///< vertices of the extracted polylines
+  StageError lines;    ///< samples of the fitted polylines (the map metric's sampling)
+  HeadingBreakdown heading;
+};
+
+/// Collects the stage distances room by room, from inside the mapper's room listener: the
+/// trace (whole grids) is dropped after that call, so only one distance per occupied cell,
+/// vertex and line sample is kept, never a grid.
+class ErrorBreakdownBuilder {
+ public:
+  ErrorBreakdownBuilder(std::span<const mapper::Segment> truth, double occupied_threshold,
+                        const MapMetricsOptions& options = {});
+
+  /// `room_to_world` is the finished room's asr.pose (local -> corrected world).
+  void add_room(const mapper::Pose2& room_to_world, const mapper::AsrTrace& trace);
+  void add_room_span(const RoomSpan& span) { spans_.push_back(span); }
+
+  const SegmentIndex& truth_index() const { return truth_; }
+
+  /// The block, with the heading part from the run's trajectory.
+  ErrorBreakdown finish(std::span<const TrajectoryRow> rows);
+
+ private:
+  SegmentIndex truth_;
+  double occupied_threshold_;
+  double sample_step_m_;
+  std::vector<double> grid_m_, cleaned_m_, points_m_, lines_m_;
+  std::vector<RoomSpan> spans_;
+};
+
+}  // namespace cogmap::experiments

@@ -1,0 +1,169 @@
+#include "cogmap/experiments/error_breakdown.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cogmap::experiments {
+
+using mapper::Point2;
+using mapper::Pose2;
+using mapper::Segment;
+
+namespace {
+
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+std::vector<Point2> vertices_world(const std::vector<mapper::Polyline>& lines, const Pose2& pose) {
+  std::vector<Point2> out;
+  for (const mapper::Polyline& line : lines) {
+    for (const Point2& p : line) out.push_back(pose.transform(p));
+  }
+  return out;
+}
+
+std::vector<Segment> segments_world(const std::vector<mapper::Polyline>& lines, const Pose2& pose) {
+  std::vector<Segment> out;
+  for (const mapper::Polyline& line : lines) {
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      out.push_back({pose.transform(line[i - 1]), pose.transform(line[i])});
+    }
+  }
+  return out;
+}
+
+void append(std::vector<double>& to, const std::vector<double>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+double mean(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (const double x : v) sum += x;
+  return sum / static_cast<double>(v.size());
+}
+
+double heading_error_deg(const TrajectoryRow& row, double correction_rad) {
+  // Rotations compose by adding angles, whatever the pivot of the correction.
+  const double drawn_rad = row.estimate.theta_rad + correction_rad;
+  return mapper::wrap_angle_rad(drawn_rad - row.truth->theta_rad) * kDegPerRad;
+}
+
+}  // namespace
+
+StageError stage_error(std::vector<double>& distances_m) {
+  StageError e;
+  e.count = distances_m.size();
+  if (distances_m.empty()) return e;
+  e.median_m = quantile(distances_m, 0.5);
+  e.p90_m = quantile(distances_m, 0.9);
+  return e;
+}
+
+std::vector<Point2> occupied_cells_world(const mapper::HistogramGrid& grid,
+                                         double occupied_threshold, const Pose2& room_to_world) {
+  std::vector<Point2> out;
+  const mapper::GridGeometry& g = grid.geometry();
+  for (int y = 0; y < grid.height(); ++y) {
+    for (int x = 0; x < grid.width(); ++x) {
+      // Strictly greater, as the builder's stages test it (asr_builder.h: "H > ε is occupied").
+      if (static_cast<double>(grid.get({x, y})) > occupied_threshold) {
+        out.push_back(room_to_world.transform(g.center_of({x, y})));
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<double> nearest_distances_m(const SegmentIndex& truth, std::span<const Point2> points) {
+  std::vector<double> out;
+  out.reserve(points.size());
+  for (const Point2& p : points) out.push_back(truth.nearest_distance_m(p));
+  return out;
+}
+
+std::vector<ErrorPiece> error_pieces(std::span<const Segment> map, const SegmentIndex& truth,
+                                     double sample_step_m) {
+  std::vector<ErrorPiece> out;
+  for (const SurfaceSample& s : sample_segments(map, sample_step_m)) {
+    // The sample is its piece's midpoint and stands for weight_m of the segment.
+    const Segment& seg = map[s.segment];
+    const Point2 half = (seg.b - seg.a) * (0.5 * s.weight_m / seg.length_m());
+    out.push_back({{s.point - half, s.point + half}, truth.nearest_distance_m(s.point)});
+  }
+  return out;
+}
+
+std::optional<RoomHeadingError> room_heading_error(std::span<const TrajectoryRow> rows,
+                                                   const RoomSpan& room) {
+  const TrajectoryRow* first = nullptr;
+  const TrajectoryRow* last = nullptr;
+  for (const TrajectoryRow& row : rows) {
+    if (row.t_s < room.start_time_s) continue;
+    if (row.t_s > room.end_time_s) break;
+    if (!row.truth) continue;
+    if (first == nullptr) first = &row;
+    last = &row;
+  }
+  if (first == nullptr) return std::nullopt;
+  // The first row is the boundary frame the room shares with its parent: its estimate is already
+  // in this room's frame (the parent's correction applied). So is every row up to the last,
+  // which carries this room's correction too when the room ended inside that frame.
+  const bool last_corrected = room.last_row_corrected && last->t_s == room.end_time_s;
+  return RoomHeadingError{heading_error_deg(*first, room.room_to_world_rad),
+                          heading_error_deg(*last, last_corrected ? 0.0 : room.room_to_world_rad)};
+}
+
+HeadingBreakdown heading_breakdown(std::span<const TrajectoryRow> rows,
+                                   std::span<const RoomSpan> rooms) {
+  std::vector<double> entry, exit, drift;
+  for (const RoomSpan& room : rooms) {
+    const std::optional<RoomHeadingError> e = room_heading_error(rows, room);
+    if (!e) continue;
+    entry.push_back(std::abs(e->entry_deg));
+    exit.push_back(std::abs(e->exit_deg));
+    const double drift_rad = mapper::wrap_angle_rad((e->exit_deg - e->entry_deg) / kDegPerRad);
+    drift.push_back(std::abs(drift_rad * kDegPerRad));
+  }
+  HeadingBreakdown h;
+  h.rooms = entry.size();
+  if (entry.empty()) return h;
+  h.entry_error_deg_mean_abs = mean(entry);
+  h.exit_error_deg_mean_abs = mean(exit);
+  h.within_room_drift_deg_mean_abs = mean(drift);
+  h.within_room_drift_deg_max_abs = *std::max_element(drift.begin(), drift.end());
+  return h;
+}
+
+ErrorBreakdownBuilder::ErrorBreakdownBuilder(std::span<const Segment> truth,
+                                             double occupied_threshold,
+                                             const MapMetricsOptions& options)
+    : truth_(truth, options.index_cell_m),
+      occupied_threshold_(occupied_threshold),
+      sample_step_m_(options.sample_step_m) {}
+
+void ErrorBreakdownBuilder::add_room(const Pose2& room_to_world, const mapper::AsrTrace& trace) {
+  append(grid_m_, nearest_distances_m(
+                      truth_, occupied_cells_world(trace.raw, occupied_threshold_, room_to_world)));
+  append(cleaned_m_,
+         nearest_distances_m(
+             truth_, occupied_cells_world(trace.cleaned, occupied_threshold_, room_to_world)));
+  append(points_m_, nearest_distances_m(truth_, vertices_world(trace.extracted, room_to_world)));
+  // The fitted polylines are the ASR's walls (rejected fits kept as their DP segments), so
+  // this stage samples exactly what the `map` block measures.
+  const std::vector<Segment> lines = segments_world(trace.fitted, room_to_world);
+  for (const SurfaceSample& s : sample_segments(lines, sample_step_m_)) {
+    lines_m_.push_back(truth_.nearest_distance_m(s.point));
+  }
+}
+
+ErrorBreakdown ErrorBreakdownBuilder::finish(std::span<const TrajectoryRow> rows) {
+  ErrorBreakdown b;
+  b.grid = stage_error(grid_m_);
+  b.cleaned = stage_error(cleaned_m_);
+  b.points = stage_error(points_m_);
+  b.lines = stage_error(lines_m_);
+  b.heading = heading_breakdown(rows, spans_);
+  return b;
+}
+
+}  // namespace cogmap::experiments
