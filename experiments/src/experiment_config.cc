@@ -157,6 +157,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "miss_decrement",
                      "em_odometry_prior",
                      "em_prior_shrinks",
+                     "em_reference_rooms",
                      "em_drift_per_rad",
                      "em_smear_variance",
                      "em_min_direction_sigma_deg",
@@ -222,6 +223,11 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.max_room_extent_m = number_in(block, "max_room_extent_m", 1.0, 2000.0, o.max_room_extent_m);
   o.localizer.odometry_prior = block.get_or<bool>("em_odometry_prior", o.localizer.odometry_prior);
   o.localizer.prior_shrinks = block.get_or<bool>("em_prior_shrinks", o.localizer.prior_shrinks);
+  if (const auto r = block.child("em_reference_rooms")) {
+    const int rooms = r->as<int>();  // a whole number: "expected an integer" otherwise
+    if (rooms < 1 || rooms > 1000) r->fail("em_reference_rooms must be in [1, 1000]");
+    o.localizer.reference_rooms = static_cast<std::size_t>(rooms);
+  }
   o.localizer.drift.per_rad_turned =
       number_in(block, "em_drift_per_rad", 0.0, 1.0, o.localizer.drift.per_rad_turned);
   o.localizer.smear_variance = block.get_or<bool>("em_smear_variance", o.localizer.smear_variance);

@@ -229,7 +229,9 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
     for (Point2& p : line) p = asr.pose.transform(p);
   }
   resident_accepted.push_back(std::move(accepted_world));
-  if (resident_accepted.size() > kResidentRooms) resident_accepted.pop_front();
+  if (resident_accepted.size() > std::max<std::size_t>(options.localizer.reference_rooms, 1)) {
+    resident_accepted.pop_front();
+  }
 
   store.save(asr);
   graph.add_node({asr.id, asr.pose, asr.pose.transform(asr.reference_point)});

@@ -69,6 +69,8 @@ struct LocalizerOptions {
   /// prior only as the innovation gate and applies a measurement that passes it whole. The
   /// shrinking posterior lags real corrections of short corridor ASRs (hallway ATE 0.9 -> 2.5 m).
   bool prior_shrinks = false;
+  /// How many of the latest localised rooms' accepted walls are EM's reference for the next.
+  std::size_t reference_rooms = 2;
   /// The odometry drift model the mapper facade turns a room's path into a RotationPrior with.
   HeadingDriftModel drift;
 };
