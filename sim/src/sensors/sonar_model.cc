@@ -158,7 +158,20 @@ double SonarModel::echo_probability(const SonarScene& scene, const mapper::Pose2
 
 mapper::SonarReading SonarModel::ping(const SonarScene& scene, const mapper::Pose2& true_pose,
                                       int index, double time_s) {
-  const std::vector<EchoCandidate> candidates = echo_candidates(scene, true_pose, index);
+  // echo_candidates() without its vector per ping: the same cone and index, a reused buffer.
+  if (index < 0 || index >= static_cast<int>(geometry_.sonars.size())) {
+    throw std::out_of_range("SonarModel: no transducer " + std::to_string(index));
+  }
+  const mapper::SonarMount& m = geometry_.sonars[static_cast<std::size_t>(index)];
+  sonar_detail::Cone cone;
+  cone.origin = true_pose.transform(mapper::Point2(m.x_m, m.y_m));
+  cone.axis_rad = true_pose.theta_rad + m.heading_rad;
+  cone.max_range_m = geometry_.sonar_max_range_m;
+  if (!index_ || !index_->matches(scene)) {
+    index_ = std::make_shared<const sonar_detail::SceneIndex>(scene);
+  }
+  thread_local std::vector<EchoCandidate> candidates;
+  sonar_detail::echo_candidates(scene, cone, options_, index_.get(), candidates);
   // Draw the same three numbers on every ping so the main stream advances identically whatever
   // the scene; a change in one wall then does not reshuffle the noise of every later reading.
   const double z = std::normal_distribution<double>(0.0, 1.0)(rng_);

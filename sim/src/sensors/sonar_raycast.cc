@@ -31,42 +31,53 @@ bool clear_line(const SonarScene& scene, const Point2& from, const Point2& dir, 
 namespace {
 
 // One surface's test, shared by every scan so all run the very same floating-point operations.
-// Equally distant surfaces: the higher index wins, whatever order they are tested in.
-void test_surface(const SonarScene& scene, int i, const Point2& origin, const Point2& dir,
-                  double& best_t, std::optional<RayHit>& best) {
+// Equally distant surfaces: the higher index wins, whatever order they are tested in. Only the
+// distance and the surface are kept; the hit point and normal are computed once at the end
+// (finish_hit), from the same operands, so they are the very same doubles.
+inline void test_surface(const SonarScene& scene, int i, const Point2& origin, const Point2& dir,
+                         double& best_t, int& best_i) {
   const mapper::Segment& s = scene.surfaces[static_cast<std::size_t>(i)];
   const Point2 e = s.b - s.a;
   const double denom = cross(dir, e);
   if (std::abs(denom) < 1e-15) return;  // parallel: a grazing ray never echoes anyway
   const Point2 ao = s.a - origin;
   const double t = cross(ao, e) / denom;
+  if (t <= kMinT || t > best_t) return;  // u is not needed (the test below is an OR)
   const double u = cross(ao, dir) / denom;
-  if (t <= kMinT || t > best_t || u < 0.0 || u > 1.0) return;
-  if (best && t == best_t && i < best->surface) return;
-  const double len = e.norm();
+  if (u < 0.0 || u > 1.0) return;
+  if (best_i >= 0 && t == best_t && i < best_i) return;
   best_t = t;
-  best = RayHit{t, i, origin + t * dir, Point2(-e.y() / len, e.x() / len)};
+  best_i = i;
+}
+
+std::optional<RayHit> finish_hit(const SonarScene& scene, const Point2& origin, const Point2& dir,
+                                 double best_t, int best_i) {
+  if (best_i < 0) return std::nullopt;
+  const mapper::Segment& s = scene.surfaces[static_cast<std::size_t>(best_i)];
+  const Point2 e = s.b - s.a;
+  const double len = e.norm();
+  return RayHit{best_t, best_i, origin + best_t * dir, Point2(-e.y() / len, e.x() / len)};
 }
 
 }  // namespace
 
 std::optional<RayHit> first_hit(const SonarScene& scene, const Point2& origin, const Point2& dir,
                                 double max_t_m, int skip_surface, const SceneIndex* index) {
-  std::optional<RayHit> best;
+  int best_i = -1;
   double best_t = max_t_m;
   if (index == nullptr) {
     for (int i = 0; i < static_cast<int>(scene.surfaces.size()); ++i) {
-      if (i != skip_surface) test_surface(scene, i, origin, dir, best_t, best);
+      if (i != skip_surface) test_surface(scene, i, origin, dir, best_t, best_i);
     }
-    return best;
+    return finish_hit(scene, origin, dir, best_t, best_i);
   }
   // Cell by cell outwards from the origin, stopping once the nearest hit lies before the next
   // cell: test_surface keeps the nearest hit (ties to the higher index) whatever the order.
   index->walk_ray(origin, dir, max_t_m, [&](int i) {
-    if (i != skip_surface) test_surface(scene, i, origin, dir, best_t, best);
+    if (i != skip_surface) test_surface(scene, i, origin, dir, best_t, best_i);
     return best_t;
   });
-  return best;
+  return finish_hit(scene, origin, dir, best_t, best_i);
 }
 
 Point2 reflect(const Point2& dir, const Point2& normal) {
@@ -102,8 +113,25 @@ double surface_strength(const SonarMaterial& m, double cos_incidence, double ran
                         double range_gain_exponent, double dphi_rad) {
   const double lobe_rad = m.specular_lobe_deg * std::numbers::pi / 180.0;
   double mirror = 0.0;
-  // Beyond 8 lobe widths exp(-32) adds nothing: skip the acos and exp.
-  if (cos_incidence > std::cos(std::min(8.0 * lobe_rad, std::numbers::pi / 2))) {
+  // Beyond 8 lobe widths exp(-32) adds nothing: skip the acos and exp. The cut-off's cosine is
+  // remembered for the last few lobe widths (a scene has a handful of materials): the same double.
+  constexpr int kCutoffCache = 4;
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();  // equal to nothing
+  thread_local double cached_lobe[kCutoffCache] = {kNone, kNone, kNone, kNone};
+  thread_local double cached_cos[kCutoffCache] = {};
+  thread_local int cached_next = 0;
+  double cutoff = 0.0;
+  int k = 0;
+  while (k < kCutoffCache && !(cached_lobe[k] == lobe_rad)) ++k;
+  if (k < kCutoffCache) {
+    cutoff = cached_cos[k];
+  } else {
+    cutoff = std::cos(std::min(8.0 * lobe_rad, std::numbers::pi / 2));
+    cached_lobe[cached_next] = lobe_rad;
+    cached_cos[cached_next] = cutoff;
+    cached_next = (cached_next + 1) % kCutoffCache;
+  }
+  if (cos_incidence > cutoff) {
     const double z = std::acos(std::min(1.0, cos_incidence)) / lobe_rad;
     mirror = m.specular_strength * std::exp(-0.5 * z * z) /
              (std::sqrt(2.0 * std::numbers::pi) * lobe_rad);
@@ -119,6 +147,13 @@ std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& 
                                            const SonarModelOptions& options,
                                            const SceneIndex* index) {
   std::vector<EchoCandidate> out;
+  echo_candidates(scene, cone, options, index, out);
+  return out;
+}
+
+void echo_candidates(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options,
+                     const SceneIndex* index, std::vector<EchoCandidate>& out) {
+  out.clear();
   const double sigma_rad = options.beam_sigma_deg * std::numbers::pi / 180.0;
   const double fan_rad = options.fan_half_width_deg * std::numbers::pi / 180.0;
   const double gain = std::pow(10.0, options.detection_gain_db / 10.0);
@@ -138,12 +173,33 @@ std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& 
   };
   thread_local std::vector<Ray> rays;
   rays.clear();
+  // The offset and beam weight of each ray depend only on the options: kept from the last ping
+  // whose options were the same (the same doubles as computing them again).
+  struct FanTable {
+    int n = -1;
+    double fan_rad = 0.0, sigma_rad = 0.0, gain = 0.0;
+    std::vector<double> offset, beam;
+  };
+  thread_local FanTable fan;
+  if (!(fan.n == n && fan.fan_rad == fan_rad && fan.sigma_rad == sigma_rad && fan.gain == gain)) {
+    fan.n = n;
+    fan.fan_rad = fan_rad;
+    fan.sigma_rad = sigma_rad;
+    fan.gain = gain;
+    fan.offset.clear();
+    fan.beam.clear();
+    for (int i = 0; i < n; ++i) {
+      const double offset = n == 1 ? 0.0 : -fan_rad + 2.0 * fan_rad * i / (n - 1);
+      fan.offset.push_back(offset);
+      fan.beam.push_back(gain * beam_pattern(offset, sigma_rad));
+    }
+  }
   double certain_m = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
-    const double offset = n == 1 ? 0.0 : -fan_rad + 2.0 * fan_rad * i / (n - 1);
+    const double offset = fan.offset[static_cast<std::size_t>(i)];
     const double angle = cone.axis_rad + offset;
-    Ray ray{Point2(std::cos(angle), std::sin(angle)), offset,
-            gain * beam_pattern(offset, sigma_rad), std::nullopt};
+    Ray ray{Point2(std::cos(angle), std::sin(angle)), offset, fan.beam[static_cast<std::size_t>(i)],
+            std::nullopt};
     ray.hit = first_hit(scene, cone.origin, ray.d, cone.max_range_m, -1, index);
     if (ray.hit) {
       const SonarMaterial& m1 = scene.material_of(ray.hit->surface);
@@ -158,6 +214,14 @@ std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& 
   // echo can be heard first, so their line of sight is not tested).
   const double cos_fan = std::cos(fan_rad);
   for (const Point2& c : scene.corners) {
+    // A corner more than `reach` away along x or y is further than max range or a certain echo:
+    // its norm is at least |dx| (1 - 4 eps) > bound, so the exact test below would skip it too.
+    const double bound = std::min(cone.max_range_m, certain_m);
+    if (bound < 1e6) {
+      const Point2 v = c - cone.origin;
+      const double reach = bound + 1e-6;
+      if (std::abs(v.x()) > reach || std::abs(v.y()) > reach) continue;
+    }
     const double dist = (c - cone.origin).norm();
     if (dist <= kMinT || dist > cone.max_range_m || dist > certain_m) continue;
     const Point2 dir = (c - cone.origin) / dist;
@@ -180,12 +244,19 @@ std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& 
     if (!options.multipath || m1.mirror_reflectivity <= 0.0) continue;
 
     // The mirrored part goes on. No echo later than max range, nor later than a certain one,
-    // can be heard first, and both bounce ranges are at least (t1 + t2) / 2: the second leg is
-    // cast at most 2 * latest - t1 far.
+    // can be heard first. The scattered echo reads t1 + t2 >= t2 and the retro-reflection
+    // (t1 + t2 + t3) / 2 >= t2 (triangle inequality: t1 + t3 >= t2), so a second surface
+    // further than `latest` gives no candidate: the second leg is cast no further than that,
+    // plus a margin far above the rounding of the points (~1e-16 of their coordinates), and
+    // never further than 2 * latest - t1 (the bound before this one, so nothing new is cast).
     const double mirrored = beam * m1.mirror_reflectivity;
     const Point2 d2 = reflect(d, h1->normal);
     const double latest_m = std::min(cone.max_range_m, certain_m);
-    const auto h2 = first_hit(scene, h1->point, d2, 2.0 * latest_m - h1->t_m, h1->surface, index);
+    const double margin_m =
+        1e-6 + 1e-9 * (std::abs(cone.origin.x()) + std::abs(cone.origin.y()) +
+                       std::abs(h1->point.x()) + std::abs(h1->point.y()) + latest_m);
+    const double leg_m = std::min(2.0 * latest_m - h1->t_m, latest_m + margin_m);
+    const auto h2 = first_hit(scene, h1->point, d2, leg_m, h1->surface, index);
     if (!h2) continue;
     const SonarMaterial& m2 = scene.material_of(h2->surface);
     // The second surface scatters back along the bounce path: range = t1 + t2.
@@ -222,10 +293,26 @@ std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& 
     out.push_back({retro_range, strength, true});
   }
   std::erase_if(out, [&](const EchoCandidate& c) { return c.range_m > certain_m; });
-  std::stable_sort(out.begin(), out.end(), [](const EchoCandidate& a, const EchoCandidate& b) {
+  // Stable insertion sort by range: the same order as std::stable_sort, without its temporary
+  // buffer per ping (a ping has a few dozen candidates). Only a NaN range (a non-finite pose)
+  // breaks the strict weak order, and then the two could differ: such a ping, or one with very
+  // many candidates (a huge rays_per_cone), keeps std::stable_sort.
+  const auto by_range = [](const EchoCandidate& a, const EchoCandidate& b) {
     return a.range_m < b.range_m;
-  });
-  return out;
+  };
+  constexpr std::size_t kInsertionSortMax = 128;
+  if (out.size() > kInsertionSortMax ||
+      std::any_of(out.begin(), out.end(),
+                  [](const EchoCandidate& c) { return std::isnan(c.range_m); })) {
+    std::stable_sort(out.begin(), out.end(), by_range);
+    return;
+  }
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    const EchoCandidate x = out[i];
+    std::size_t j = i;
+    for (; j > 0 && by_range(x, out[j - 1]); --j) out[j] = out[j - 1];
+    out[j] = x;
+  }
 }
 
 }  // namespace cogmap::sim::sonar_detail

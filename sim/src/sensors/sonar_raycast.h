@@ -46,4 +46,8 @@ std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& 
                                            const SonarModelOptions& options,
                                            const SceneIndex* index = nullptr);
 
+/// The same candidates written into `out` (cleared first), so a caller can reuse its buffer.
+void echo_candidates(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options,
+                     const SceneIndex* index, std::vector<EchoCandidate>& out);
+
 }  // namespace cogmap::sim::sonar_detail

@@ -24,22 +24,6 @@ static_assert(sizeof(Point2) == 2 * sizeof(double));
 
 }  // namespace
 
-int SceneIndex::column_of(double x) const {
-  const double v = std::floor((x - x0_) / cell_m_);
-  // Clamp in double before converting: far-away or non-finite query points map to the border
-  // cells (which are then merely extra candidates) instead of overflowing the cast.
-  if (!(v >= 0.0)) return 0;
-  if (v >= static_cast<double>(nx_ - 1)) return nx_ - 1;
-  return static_cast<int>(v);
-}
-
-int SceneIndex::row_of(double y) const {
-  const double v = std::floor((y - y0_) / cell_m_);
-  if (!(v >= 0.0)) return 0;
-  if (v >= static_cast<double>(ny_ - 1)) return ny_ - 1;
-  return static_cast<int>(v);
-}
-
 template <class Visit>
 void SceneIndex::for_cells_of_segment(const Point2& a, const Point2& b, Visit&& visit) const {
   const int r0 = row_of(std::min(a.y(), b.y()) - kPadM);
@@ -127,14 +111,6 @@ bool SceneIndex::matches(const SonarScene& scene) const {
                       scene.surfaces.size() * sizeof(mapper::Segment)) == 0) &&
          (scene.corners.empty() || std::memcmp(scene.corners.data(), scene_.corners.data(),
                                                scene.corners.size() * sizeof(Point2)) == 0);
-}
-
-void SceneIndex::next_query() const {
-  if (stamp_.size() != scene_.surfaces.size()) stamp_.assign(scene_.surfaces.size(), 0);
-  if (++query_ == 0) {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_ = 1;
-  }
 }
 
 void SceneIndex::surfaces_near_ray(const Point2& origin, const Point2& dir, double max_t_m,

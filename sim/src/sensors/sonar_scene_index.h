@@ -70,6 +70,31 @@ class SceneIndex {
   mutable std::uint32_t query_ = 0;
 };
 
+// Clamp in double before converting: far-away or non-finite query points map to the border cells
+// (which are then merely extra candidates) instead of overflowing the cast. Inline: the ray walk
+// calls them for every ray.
+inline int SceneIndex::column_of(double x) const {
+  const double v = std::floor((x - x0_) / cell_m_);
+  if (!(v >= 0.0)) return 0;
+  if (v >= static_cast<double>(nx_ - 1)) return nx_ - 1;
+  return static_cast<int>(v);
+}
+
+inline int SceneIndex::row_of(double y) const {
+  const double v = std::floor((y - y0_) / cell_m_);
+  if (!(v >= 0.0)) return 0;
+  if (v >= static_cast<double>(ny_ - 1)) return ny_ - 1;
+  return static_cast<int>(v);
+}
+
+inline void SceneIndex::next_query() const {
+  if (stamp_.size() != scene_.surfaces.size()) stamp_.assign(scene_.surfaces.size(), 0);
+  if (++query_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+}
+
 template <class Test>
 void SceneIndex::walk_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
                           Test&& test) const {
@@ -104,6 +129,19 @@ void SceneIndex::walk_ray(const mapper::Point2& origin, const mapper::Point2& di
   const int step_r = dy > 0.0 ? 1 : (dy < 0.0 ? -1 : 0);
   constexpr double kPadM = 1e-3;  // as the cell lists' padding (sonar_scene_index.cc)
   double nearest_m = kInf;
+  // Where the ray leaves column c / row r, from the cell's own borders (no accumulated rounding).
+  // Each is recomputed only when the walk steps along its axis: it depends on c (or r) alone.
+  auto exit_c = [&](int col) {
+    return step_c > 0   ? (x0_ + (col + 1) * cell_m_ - ox) / dx
+           : step_c < 0 ? (x0_ + col * cell_m_ - ox) / dx
+                        : kInf;
+  };
+  auto exit_r = [&](int row) {
+    return step_r > 0   ? (y0_ + (row + 1) * cell_m_ - oy) / dy
+           : step_r < 0 ? (y0_ + row * cell_m_ - oy) / dy
+                        : kInf;
+  };
+  double t_c = exit_c(c), t_r = exit_r(r);
   for (;;) {
     const int cell = r * nx_ + c;
     for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
@@ -113,21 +151,23 @@ void SceneIndex::walk_ray(const mapper::Point2& origin, const mapper::Point2& di
       seen = query_;
       nearest_m = test(id);
     }
-    // Where the ray leaves this cell, from the cell's own borders (no accumulated rounding).
-    const double t_c = step_c > 0   ? (x0_ + (c + 1) * cell_m_ - ox) / dx
-                       : step_c < 0 ? (x0_ + c * cell_m_ - ox) / dx
-                                    : kInf;
-    const double t_r = step_r > 0   ? (y0_ + (r + 1) * cell_m_ - oy) / dy
-                       : step_r < 0 ? (y0_ + r * cell_m_ - oy) / dy
-                                    : kInf;
     const double t_leave = std::min(t_c, t_r);
     if (t_leave >= t_out) return;  // the ray ends in this cell
     // A hit at t lies in the cell the walk is in at t, and its surface is listed in every cell
     // within the padding of it: nothing untested can be hit before t_leave - kPadM.
     if (nearest_m < t_leave - kPadM) return;
-    if (t_c <= t_r) c += step_c;
-    if (t_r <= t_c) r += step_r;
-    if (c < 0 || c >= nx_ || r < 0 || r >= ny_) return;
+    const bool next_c = t_c <= t_r, next_r = t_r <= t_c;
+    // Only the index that stepped can leave the grid.
+    if (next_c) {
+      c += step_c;
+      if (c < 0 || c >= nx_) return;
+      t_c = exit_c(c);
+    }
+    if (next_r) {
+      r += step_r;
+      if (r < 0 || r >= ny_) return;
+      t_r = exit_r(r);
+    }
   }
 }
 
