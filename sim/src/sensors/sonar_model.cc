@@ -115,9 +115,8 @@ double SonarModel::range_noise_sd_m(double range_m) const {
   return std::hypot(options_.range_noise_fraction * range_m, options_.range_noise_floor_m);
 }
 
-std::vector<EchoCandidate> SonarModel::echo_candidates(const SonarScene& scene,
-                                                       const mapper::Pose2& true_pose,
-                                                       int index) const {
+sonar_detail::Cone SonarModel::cone_for(const SonarScene& scene, const mapper::Pose2& true_pose,
+                                        int index) const {
   if (index < 0 || index >= static_cast<int>(geometry_.sonars.size())) {
     throw std::out_of_range("SonarModel: no transducer " + std::to_string(index));
   }
@@ -131,6 +130,13 @@ std::vector<EchoCandidate> SonarModel::echo_candidates(const SonarScene& scene,
   if (!index_ || !index_->matches(scene)) {
     index_ = std::make_shared<const sonar_detail::SceneIndex>(scene);
   }
+  return cone;
+}
+
+std::vector<EchoCandidate> SonarModel::echo_candidates(const SonarScene& scene,
+                                                       const mapper::Pose2& true_pose,
+                                                       int index) const {
+  const sonar_detail::Cone cone = cone_for(scene, true_pose, index);
   return sonar_detail::echo_candidates(scene, cone, options_, index_.get());
 }
 
@@ -159,17 +165,7 @@ double SonarModel::echo_probability(const SonarScene& scene, const mapper::Pose2
 mapper::SonarReading SonarModel::ping(const SonarScene& scene, const mapper::Pose2& true_pose,
                                       int index, double time_s) {
   // echo_candidates() without its vector per ping: the same cone and index, a reused buffer.
-  if (index < 0 || index >= static_cast<int>(geometry_.sonars.size())) {
-    throw std::out_of_range("SonarModel: no transducer " + std::to_string(index));
-  }
-  const mapper::SonarMount& m = geometry_.sonars[static_cast<std::size_t>(index)];
-  sonar_detail::Cone cone;
-  cone.origin = true_pose.transform(mapper::Point2(m.x_m, m.y_m));
-  cone.axis_rad = true_pose.theta_rad + m.heading_rad;
-  cone.max_range_m = geometry_.sonar_max_range_m;
-  if (!index_ || !index_->matches(scene)) {
-    index_ = std::make_shared<const sonar_detail::SceneIndex>(scene);
-  }
+  const sonar_detail::Cone cone = cone_for(scene, true_pose, index);
   thread_local std::vector<EchoCandidate> candidates;
   sonar_detail::echo_candidates(scene, cone, options_, index_.get(), candidates);
   // Draw the same three numbers on every ping so the main stream advances identically whatever

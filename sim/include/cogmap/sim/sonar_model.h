@@ -21,6 +21,7 @@ namespace cogmap::sim {
 
 namespace sonar_detail {
 class SceneIndex;
+struct Cone;
 }  // namespace sonar_detail
 
 /// What sonar can hit, world frame, metres.
@@ -170,6 +171,11 @@ class SonarModel {
   /// is a cache, so echo_candidates stays const (one model is not meant to be shared between
   /// threads: ping() already advances its random stream).
   mutable std::shared_ptr<const sonar_detail::SceneIndex> index_;
+
+  /// Transducer `index`'s cone at `true_pose` (throws std::out_of_range for an unknown one),
+  /// with index_ brought up to date for `scene`.
+  sonar_detail::Cone cone_for(const SonarScene& scene, const mapper::Pose2& true_pose,
+                              int index) const;
 };
 
 /// Transducers of one P2OS sonar array: array a holds indices 8a .. 8a+7.
