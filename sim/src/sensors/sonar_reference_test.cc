@@ -20,6 +20,7 @@
 
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
+#include "shipped_worlds_test_support.h"
 #include "sonar_raycast.h"
 #include "sonar_scene_index.h"
 
@@ -267,21 +268,8 @@ namespace {
 
 using mapper::Point2;
 
-std::filesystem::path worlds_dir() {
-  const char* env = std::getenv("COGMAP_SOURCE_DIR");
-  return std::filesystem::path(env ? env : COGMAP_SOURCE_DIR_FALLBACK) / "worlds";
-}
-
-std::vector<std::filesystem::path> shipped_worlds() {
-  std::vector<std::filesystem::path> out;
-  for (const auto& e : std::filesystem::directory_iterator(worlds_dir())) {
-    if (e.path().extension() == ".yaml") out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test_support::same_bits;
+using test_support::shipped_worlds;
 
 // Random cones over the world's bounds; `total` counts the candidates compared.
 void expect_same_as_reference(const SonarScene& scene, const SonarModelOptions& options,

@@ -16,6 +16,7 @@
 
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
+#include "shipped_worlds_test_support.h"
 #include "sonar_raycast.h"
 
 namespace cogmap::sim {
@@ -26,24 +27,9 @@ using sonar_detail::echo_candidates;
 using sonar_detail::first_hit;
 using sonar_detail::SceneIndex;
 
-std::filesystem::path worlds_dir() {
-  const char* env = std::getenv("COGMAP_SOURCE_DIR");
-  return std::filesystem::path(env ? env : COGMAP_SOURCE_DIR_FALLBACK) / "worlds";
-}
-
-std::filesystem::path world_path(const std::string& name) { return worlds_dir() / name; }
-
-// Every world the repository ships (worlds/*.yaml), sorted so failures are reproducible.
-std::vector<std::filesystem::path> shipped_worlds() {
-  std::vector<std::filesystem::path> out;
-  for (const auto& e : std::filesystem::directory_iterator(worlds_dir())) {
-    if (e.path().extension() == ".yaml") out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test_support::same_bits;
+using test_support::shipped_worlds;
+using test_support::world_path;
 
 // Random rays from random points, including rays exactly along the axes (parallel to most walls)
 // and rays aimed exactly at surface endpoints, the cases where rounding decides.
