@@ -45,7 +45,8 @@ RobotSource parse_source(const Node& n) {
 }
 
 ControllerConfig parse_controller(const Node& block) {
-  block.expect_keys({"type", "speed_mps", "waypoints", "waypoint_tolerance_m", "pose"});
+  block.expect_keys({"type", "speed_mps", "waypoints", "waypoint_tolerance_m", "pose", "strategy",
+                     "time_budget_s", "distance_budget_m"});
   ControllerConfig c;
   const Node type = block["type"];
   const std::string t = type.as<std::string>();
@@ -75,6 +76,26 @@ ControllerConfig parse_controller(const Node& block) {
     }
     c.steer_by_truth = p == "truth";
   }
+  if (const auto strategy = block.child("strategy")) {
+    if (c.type != ControllerKind::kExplore) strategy->fail("strategy is only used by explore");
+    const std::string st = strategy->as<std::string>();
+    if (st == "frontier") {
+      c.explore_strategy = mapper::nav::ExploreStrategy::kFrontier;
+    } else if (st == "heading") {
+      c.explore_strategy = mapper::nav::ExploreStrategy::kHeading;
+    } else if (st == "edge") {
+      c.explore_strategy = mapper::nav::ExploreStrategy::kEdge;
+    } else {
+      strategy->fail("unknown explore strategy '" + st + "' (expected frontier, edge or heading)");
+    }
+  }
+  for (const char* key : {"time_budget_s", "distance_budget_m"}) {
+    if (block.child(key) && c.type != ControllerKind::kExplore) {
+      block[key].fail(std::string(key) + " is only used by explore");
+    }
+  }
+  c.explore_time_budget_s = number_in(block, "time_budget_s", 0.0, 1e6, 0.0);
+  c.explore_distance_budget_m = number_in(block, "distance_budget_m", 0.0, 1e6, 0.0);
   if (c.type == ControllerKind::kRoute && c.waypoints.empty()) {
     block.fail("a route controller needs at least one waypoint in 'waypoints'");
   }

@@ -178,6 +178,43 @@ TEST(ExperimentConfig, ControllerPoseSource) {
       << error_of(bad);
 }
 
+TEST(ExperimentConfig, ExploreStrategyAndBudgets) {
+  const fs::path def =
+      write_temp("xdef.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore}\n");
+  const Experiment d = load_experiment(def);
+  EXPECT_EQ(d.controller.explore_strategy, mapper::nav::ExploreStrategy::kFrontier);
+  EXPECT_EQ(d.controller.explore_time_budget_s, 0.0);
+  EXPECT_EQ(d.controller.explore_distance_budget_m, 0.0);
+  const fs::path p =
+      write_temp("xedge.yaml",
+                 "name: r\nworld: w.yaml\ncontroller:\n  type: explore\n"
+                 "  strategy: edge\n  time_budget_s: 300\n  distance_budget_m: 80\n");
+  const Experiment e = load_experiment(p);
+  EXPECT_EQ(e.controller.explore_strategy, mapper::nav::ExploreStrategy::kEdge);
+  EXPECT_EQ(e.controller.explore_time_budget_s, 300.0);
+  EXPECT_EQ(e.controller.explore_distance_budget_m, 80.0);
+  EXPECT_EQ(load_experiment(p, {"controller.strategy=heading"}).controller.explore_strategy,
+            mapper::nav::ExploreStrategy::kHeading);
+  const fs::path bad = write_temp(
+      "xbad.yaml", "name: r\nworld: w.yaml\ncontroller:\n  type: explore\n  strategy: spiral\n");
+  EXPECT_NE(error_of(bad).find(":5: controller.strategy: unknown explore strategy 'spiral'"),
+            std::string::npos)
+      << error_of(bad);
+  const fs::path route = write_temp("xroute.yaml",
+                                    "name: r\nworld: w.yaml\ncontroller:\n  type: route\n"
+                                    "  waypoints: [[1, 1]]\n  time_budget_s: 10\n");
+  EXPECT_NE(error_of(route).find(":6: controller.time_budget_s: time_budget_s is only used by "
+                                 "explore"),
+            std::string::npos)
+      << error_of(route);
+  const fs::path negative =
+      write_temp("xneg.yaml",
+                 "name: r\nworld: w.yaml\ncontroller:\n  type: explore\n  distance_budget_m: -1\n");
+  EXPECT_NE(error_of(negative).find(":5: controller.distance_budget_m: must be in [0,"),
+            std::string::npos)
+      << error_of(negative);
+}
+
 TEST(ExperimentConfig, RecordsRealRobotSources) {
   const fs::path p = write_temp("p2os.yaml", "name: r\nworld: w.yaml\nrobot: {source: p2os}\n");
   EXPECT_EQ(load_experiment(p).robot_source, RobotSource::kP2os);

@@ -40,6 +40,8 @@ Json nav_json(const NavMetrics& n) {
   nav["distance_m"] = n.distance_m;
   nav["stalled_s"] = n.stalled_s;
   nav["rooms_visited"] = opt_any(n.rooms_visited);
+  nav["rooms_total_true"] = opt_any(n.rooms_total_true);
+  nav["rooms_visited_true"] = opt_any(n.rooms_visited_true);
   nav["exploration_complete"] = opt_any(n.exploration_complete);
   return nav;
 }

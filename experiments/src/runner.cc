@@ -12,6 +12,7 @@
 #include "cogmap/experiments/ros_map.h"
 #include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/run_outputs.h"
+#include "cogmap/experiments/true_rooms.h"
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/mapper/io/directory_asr_store.h"
 #include "cogmap/mapper/mapper.h"
@@ -59,6 +60,10 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
     case ControllerKind::kExplore: {
       mapper::nav::ExploreOptions o;
       o.speed_mps = c.speed_mps;
+      o.waypoint_tolerance_m = c.waypoint_tolerance_m;
+      o.strategy = c.explore_strategy;
+      o.time_budget_s = c.explore_time_budget_s;
+      o.distance_budget_m = c.explore_distance_budget_m;
       return mapper::nav::make_explorer(o);
     }
     case ControllerKind::kNone:
@@ -107,7 +112,7 @@ NavMetrics nav_metrics(const mapper::nav::Controller& controller, const Controll
   nav.stalled_s = stalled_s;
   if (c.type == ControllerKind::kExplore) {
     if (t.rooms_visited > 0) nav.rooms_visited = t.rooms_visited;  // when the explorer counts
-    nav.exploration_complete = controller.done();
+    nav.exploration_complete = t.exploration_complete;
   }
   return nav;
 }
@@ -321,6 +326,11 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       m.localization = evaluate_trajectory(session.rows);
       m.error_breakdown = breakdown->finish(session.rows);
       add_contacts(m.nav, session.rows, truth->surfaces, geometry);
+      if (experiment.controller.type == ControllerKind::kExplore) {
+        const TrueRooms rooms = count_true_rooms(truth->surfaces, session.rows);
+        m.nav.rooms_total_true = rooms.total;
+        m.nav.rooms_visited_true = rooms.visited;
+      }
     }
 
     mapper::io::write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows), durability);

@@ -1,6 +1,6 @@
-// The explorer (thesis §1.1.4, Fig. 1.2): always head for the free direction that promises
-// the most unexplored cells of the current room, keep going the same way unless another
-// direction is clearly better, and avoid going back over the recent path.
+// The heading explorer (thesis §1.1.4, Fig. 1.2; ExploreStrategy::kHeading): always head for the
+// free direction that promises the most unexplored cells of the current room, keep going the same
+// way unless another direction is clearly better, and avoid going back over the recent path.
 
 #include <cmath>
 #include <deque>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "nav/frontier_explorer.h"
 #include "nav/nav_core.h"
 
 namespace cogmap::mapper::nav {
@@ -125,6 +126,8 @@ class Explorer final : public Controller {
 }  // namespace
 
 std::unique_ptr<Controller> make_explorer(const ExploreOptions& options) {
+  if (options.strategy == ExploreStrategy::kFrontier) return make_frontier_explorer(options);
+  if (options.strategy == ExploreStrategy::kEdge) return make_edge_explorer(options);
   return std::make_unique<Explorer>(options);
 }
 

@@ -16,6 +16,13 @@ using testing::integrate;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
+// These tests cover the thesis's Fig. 1.2 explorer (frontier_explorer_test.cc the default).
+ExploreOptions heading_options() {
+  ExploreOptions o;
+  o.strategy = ExploreStrategy::kHeading;
+  return o;
+}
+
 VelocityCommand step(Controller& c, const GridUpdater& grid, int i, const Pose2& pose) {
   static const RobotGeometry kRobot = p2at_geometry();
   SensorFrame f = frame_at(i);
@@ -25,7 +32,7 @@ VelocityCommand step(Controller& c, const GridUpdater& grid, int i, const Pose2&
 TEST(Explorer, ChoosesTheSideThatIsStillUnexplored) {
   testing::FakeGridUpdater left{-5.0, -5.0, 10.0, -1.0f};
   left.fill_box(-5.0, 0.5, 5.0, 5.0, 0.0f);  // unexplored only for y > 0.5
-  auto c = make_explorer(ExploreOptions{});
+  auto c = make_explorer(heading_options());
   const VelocityCommand cmd = step(*c, left, 0, {0.0, 0.0, 0.0});
   EXPECT_GT(cmd.w_radps, 0.0);
   EXPECT_GT(c->trace().direction_rad, 45.0 * kDeg)
@@ -35,7 +42,7 @@ TEST(Explorer, ChoosesTheSideThatIsStillUnexplored) {
 
   testing::FakeGridUpdater right{-5.0, -5.0, 10.0, -1.0f};
   right.fill_box(-5.0, -5.0, 5.0, -0.5, 0.0f);
-  auto d = make_explorer(ExploreOptions{});
+  auto d = make_explorer(heading_options());
   EXPECT_LT(step(*d, right, 0, {0.0, 0.0, 0.0}).w_radps, 0.0);
   EXPECT_LT(d->trace().direction_rad, -45.0 * kDeg);
   EXPECT_GT(d->trace().direction_rad, -135.0 * kDeg);
@@ -43,7 +50,7 @@ TEST(Explorer, ChoosesTheSideThatIsStillUnexplored) {
 
 TEST(Explorer, KeepsItsHeadingWhenEverythingIsEquallyUnexplored) {
   testing::FakeGridUpdater unknown{-10.0, -10.0, 20.0, 0.0f};
-  auto c = make_explorer(ExploreOptions{});
+  auto c = make_explorer(heading_options());
   const VelocityCommand cmd = step(*c, unknown, 0, {0.0, 0.0, 0.3});
   EXPECT_NEAR(c->trace().direction_rad, 0.3, 2.5 * kDeg + 1e-9);  // the sector holding 0.3
   EXPECT_DOUBLE_EQ(cmd.v_mps > 0.0, true);
@@ -56,7 +63,7 @@ TEST(Explorer, DoesNotCountCellsBehindAWall) {
   grid.fill_box(1.6, -5.0, 5.0, 5.0, 0.0f);
   grid.fill_box(1.5, -5.0, 1.6, 5.0, 15.0f);
   grid.fill_box(-0.2, -3.0, 0.2, -2.0, 0.0f);
-  auto c = make_explorer(ExploreOptions{});
+  auto c = make_explorer(heading_options());
   step(*c, grid, 0, {0.0, 0.0, 0.0});
   EXPECT_LT(c->trace().target_rad, -60.0 * kDeg);
   EXPECT_GT(c->trace().target_rad, -120.0 * kDeg);
@@ -66,7 +73,7 @@ TEST(Explorer, AvoidsItsOwnRecentPath) {
   // Everything unexplored; the robot has just come from the left (+y) heading south, then
   // stops facing west. Without the penalty north and south would tie on unexplored cells.
   testing::FakeGridUpdater unknown{-10.0, -10.0, 20.0, 0.0f};
-  ExploreOptions options;
+  ExploreOptions options = heading_options();
   options.hysteresis_bonus = 0.0;
   auto c = make_explorer(options);
   int i = 0;
@@ -86,7 +93,7 @@ TEST(Explorer, ExploresAClosedRoomWithoutCollision) {
   room.fill_box(-3.05, 1.95, 3.05, 2.05, 15.0f);
   room.fill_box(-3.05, -2.05, -2.95, 2.05, 15.0f);
   room.fill_box(2.95, -2.05, 3.05, 2.05, 15.0f);
-  auto c = make_explorer(ExploreOptions{});
+  auto c = make_explorer(heading_options());
   Pose2 pose{0.0, 0.0, 0.0};
   double travelled = 0.0;
   for (int i = 0; i < 1200; ++i) {

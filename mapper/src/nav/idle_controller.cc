@@ -42,6 +42,14 @@ const char* to_string(NavMode mode) {
       return "door_probe";
     case NavMode::kDirect:
       return "direct";
+    case NavMode::kLook:
+      return "look";
+    case NavMode::kEdgeFollow:
+      return "edge_follow";
+    case NavMode::kEdgeCorner:
+      return "edge_corner";
+    case NavMode::kEdgePivot:
+      return "edge_pivot";
   }
   return "?";
 }

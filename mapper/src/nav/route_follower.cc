@@ -11,6 +11,7 @@
 #include "cogmap/mapper/nav/controller.h"
 #include "nav/door_passage.h"
 #include "nav/nav_core.h"
+#include "nav/route_follower.h"
 
 namespace cogmap::mapper::nav {
 namespace {
@@ -20,7 +21,7 @@ CoreOptions core_options(const RouteOptions& o) {
           o.recovery};
 }
 
-class RouteFollower final : public Controller {
+class RouteFollower final : public ReroutableFollower {
  public:
   RouteFollower(const RouteOptions& options, std::vector<Point2> waypoints)
       : options_(options),
@@ -71,6 +72,15 @@ class RouteFollower final : public Controller {
   }
 
   bool done() const override { return index_ >= waypoints_.size(); }
+  void set_waypoints(std::vector<Point2> waypoints) override {
+    waypoints_ = std::move(waypoints);
+    index_ = 0;
+    attempts_ = 0;
+    leg_start_.reset();  // the next step starts the leg and the give-up clock
+    probe_failed_at_.reset();
+    probe_since_s_.reset();
+    best_m_ = std::numeric_limits<double>::infinity();
+  }
   const NavTrace& trace() const override { return core_.trace(); }
 
  private:
@@ -241,6 +251,10 @@ class RouteFollower final : public Controller {
 std::unique_ptr<Controller> make_route_follower(const RouteOptions& options,
                                                 std::vector<Point2> waypoints_world) {
   return std::make_unique<RouteFollower>(options, std::move(waypoints_world));
+}
+
+std::unique_ptr<ReroutableFollower> make_reroutable_route_follower(const RouteOptions& options) {
+  return std::make_unique<RouteFollower>(options, std::vector<Point2>{});
 }
 
 }  // namespace cogmap::mapper::nav

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cogmap/mapper/mapper.h"
+#include "cogmap/mapper/nav/controller.h"
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/sim/yaml_strict.h"
 
@@ -40,6 +41,12 @@ struct ControllerConfig {
   /// short-term sonar memory (placed by the true pose), not with the mapper's grid, which lives
   /// in the estimate frame.
   bool steer_by_truth = false;
+  /// Explore only: `strategy` (frontier, the default, or heading: the thesis's Fig. 1.2
+  /// explorer, which never finishes), and budgets after which exploration stops unfinished
+  /// (`time_budget_s`, `distance_budget_m`; 0 = none, the run's duration_s still applies).
+  mapper::nav::ExploreStrategy explore_strategy = mapper::nav::ExploreStrategy::kFrontier;
+  double explore_time_budget_s = 0.0;
+  double explore_distance_budget_m = 0.0;
 };
 
 /// Bounds on what an experiment may ask for (docs/reliability.md "Limits"): beyond them a

@@ -26,6 +26,10 @@ struct NavMetrics {
   double distance_m = 0.0;                   ///< odometry path length (the robot's own count)
   double stalled_s = 0.0;                    ///< time with either stall flag set
   std::optional<std::size_t> rooms_visited;  ///< explore: rooms the explorer entered
+  /// explore: rooms of the true world (true_rooms.h; needs truth)
+  std::optional<std::size_t> rooms_total_true;
+  /// explore: true rooms the true trajectory entered (needs truth)
+  std::optional<std::size_t> rooms_visited_true;
   std::optional<bool> exploration_complete;  ///< explore: stopped with no unexplored exit left
 };
 

@@ -1,0 +1,148 @@
+// The frontier explorer: keeps its own map of what the sonar has swept from close by, drives
+// to the cheapest frontier of it through the route follower (VFH, the door behaviour,
+// recoveries), gives up goals it cannot reach, and stops when no reachable frontier is left.
+
+#include "nav/frontier_explorer.h"
+
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "nav/explore_budget.h"
+#include "nav/explore_map.h"
+#include "nav/frontier_planner.h"
+#include "nav/route_follower.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+RouteOptions route_options(const ExploreOptions& o) {
+  RouteOptions r;
+  r.speed_mps = o.speed_mps;
+  r.waypoint_tolerance_m = o.waypoint_tolerance_m;
+  r.max_turn_rate_radps = o.max_turn_rate_radps;
+  r.vfh = o.vfh;
+  r.stuck_time_s = o.stuck_time_s;
+  r.memory = o.memory;
+  r.safety = o.safety;
+  r.recovery = o.recovery;
+  r.door = o.door;
+  r.give_up_s = o.give_up_s;
+  r.progress_m = o.progress_m;
+  return r;
+}
+
+class FrontierExplorer final : public Controller {
+ public:
+  explicit FrontierExplorer(const ExploreOptions& options)
+      : options_(options),
+        map_(options.map),
+        follower_(make_reroutable_route_follower(route_options(options))),
+        budget_(options.time_budget_s, options.distance_budget_m) {}
+
+  VelocityCommand step(const NavInput& input) override {
+    if (input.frame == nullptr) return stopped(NavMode::kIdle);
+    map_.add_frame(*input.frame, input.pose, input.robot ? *input.robot : default_robot_);
+    if (finished_) return stopped(NavMode::kExploreDone);
+    const double now = input.frame->time_s;
+    const Point2 here = input.pose.translation();
+    if (budget_.spent(now, here)) return finish(false);
+    track_progress(here, now);
+    // A waypoint given up, or a recovery (the robot got stuck: a pocket behind furniture, a
+    // gap narrower than the sensed one): this goal is not worth a second try.
+    const NavTrace& followed = follower_->trace();
+    const bool failed = followed.skipped_waypoints > skipped_seen_ ||
+                        followed.recoveries > recoveries_seen_ ||
+                        (goal_ && now - progress_s_ > options_.give_up_s);
+    skipped_seen_ = followed.skipped_waypoints;
+    recoveries_seen_ = followed.recoveries;
+    if (goal_ && follower_->done() && !failed) {
+      // Arrived: hold still for a couple of sonar cycles (the ring looks all round; turning
+      // to face the frontier costs heading, 1-2 % of every turn on a skid-steer base).
+      if (!arrived_s_) arrived_s_ = now;
+      if (now - *arrived_s_ < options_.look_hold_s) return stopped(NavMode::kLook);
+    }
+    if (goal_ && (failed || follower_->done())) {
+      // Looked at from near (its frontier should be gone; if the sonar still cannot see it
+      // from there it never will), or not reachable after all: not this frontier again.
+      if (failed || map_.frontier(map_.cell_of(target_))) banned_.push_back(target_);
+      goal_.reset();
+      arrived_s_.reset();
+    }
+    // The goal is kept while its frontier cell is one: re-choosing every cycle swings the
+    // robot between nearly equal goals, and every turn costs heading.
+    if (goal_ && !map_.frontier(map_.cell_of(target_))) goal_.reset();
+    if (!goal_) {
+      const auto plan =
+          plan_to_frontier(map_, input.pose, banned_, options_.ban_radius_m, options_.frontier);
+      if (!plan) return finish(true);
+      progress_s_ = now;
+      goal_ = plan->goal;
+      target_ = plan->frontier;
+      best_m_ = std::numeric_limits<double>::infinity();
+      follower_->set_waypoints(plan->waypoints);
+    }
+    const VelocityCommand cmd = follower_->step(input);
+    trace_ = follower_->trace();
+    trace_.exploration_complete = false;
+    return cmd;
+  }
+
+  bool done() const override { return finished_; }
+  const NavTrace& trace() const override { return trace_; }
+
+ private:
+  /// The give-up clock restarts when the robot comes progress_m nearer its goal or the map
+  /// gains progress_cells newly seen cells (travelling back through known rooms to a far
+  /// frontier makes progress of the first kind, exploring of the second).
+  void track_progress(const Point2& here, double now) {
+    const std::size_t seen = map_.seen_count();
+    if (seen >= seen_at_progress_ + static_cast<std::size_t>(options_.progress_cells)) {
+      seen_at_progress_ = seen;
+      progress_s_ = now;
+    }
+    if (goal_) {
+      const double d = (*goal_ - here).norm();
+      if (d < best_m_ - options_.progress_m) {
+        best_m_ = d;
+        progress_s_ = now;
+      }
+    }
+  }
+
+  VelocityCommand finish(bool complete) {
+    finished_ = true;
+    trace_.exploration_complete = complete;
+    return stopped(NavMode::kExploreDone);
+  }
+
+  VelocityCommand stopped(NavMode mode) {
+    trace_.mode = mode;
+    return {};
+  }
+
+  ExploreOptions options_;
+  ExploreMap map_;
+  std::unique_ptr<ReroutableFollower> follower_;
+  RobotGeometry default_robot_;
+  NavTrace trace_;
+  bool finished_ = false;
+  ExploreBudget budget_;
+  std::optional<Point2> goal_;  // where the robot drives to see...
+  Point2 target_{0.0, 0.0};     // ...this frontier cell
+  double progress_s_ = 0.0;     // when the give-up clock last restarted
+  double best_m_ = std::numeric_limits<double>::infinity();  // nearest to the goal so far
+  std::size_t seen_at_progress_ = 0;
+  std::size_t skipped_seen_ = 0;
+  std::size_t recoveries_seen_ = 0;
+  std::vector<Point2> banned_;       // frontier cells given up or looked at in vain
+  std::optional<double> arrived_s_;  // arrived at the goal: holding still since
+};
+
+}  // namespace
+
+std::unique_ptr<Controller> make_frontier_explorer(const ExploreOptions& options) {
+  return std::make_unique<FrontierExplorer>(options);
+}
+
+}  // namespace cogmap::mapper::nav

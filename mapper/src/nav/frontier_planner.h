@@ -1,0 +1,32 @@
+#pragma once
+/// The explorer's choice of where to go next: the cheapest frontier cluster of the explore
+/// map (seen, passable cells next to unseen ones), reached by Dijkstra over seen cells whose
+/// step cost grows near obstacles and jumps on entering a doorway, so a room's own frontiers
+/// come before the ones behind its doors.
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "cogmap/mapper/nav/controller.h"
+#include "nav/explore_map.h"
+
+namespace cogmap::mapper::nav {
+
+struct FrontierPlan {
+  Point2 goal{0.0, 0.0};           ///< where to drive: the cheapest place in view of a frontier
+  Point2 frontier{0.0, 0.0};       ///< the frontier cell it views (its centre), estimate frame
+  std::vector<Point2> waypoints;   ///< from the first leg's end to the goal
+  double cost_m = 0.0;             ///< weighted path cost to the goal
+  std::size_t frontier_cells = 0;  ///< size of the goal's cluster
+};
+
+/// The plan to the cheapest reachable frontier cluster from `from` (its heading prices the
+/// first step's turn: turn_cost_m per radian), or nullopt when no
+/// frontier of min_frontier_cells is reachable. Frontier cells within `banned_radius_m` of a
+/// point in `banned` (goals given up) are ignored.
+std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2& from,
+                                             std::span<const Point2> banned, double banned_radius_m,
+                                             const FrontierOptions& options);
+
+}  // namespace cogmap::mapper::nav
