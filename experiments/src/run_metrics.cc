@@ -138,6 +138,9 @@ std::string metrics_json_text(const RunMetrics& m) {
                   m.wall_time_s > 0.0 ? Json(m.sim_time_s / m.wall_time_s) : Json(nullptr)},
                  {"build_time_s", m.build_time_s},
                  {"localization_time_s", m.localization_time_s}};
+  Json room_ms = Json::array();
+  for (const double s : m.room_cpu_s) room_ms.push_back(s * 1000.0);
+  j["timing"]["room_cpu_ms"] = room_ms;
   return j.dump(2) + "\n";
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "cogmap/experiments/run_metrics.h"
 
 namespace cogmap::experiments {
@@ -58,6 +60,17 @@ TEST(RunMetrics, JsonHasTheRequiredKeysAndOmitsTruthMetricsWithoutTruth) {
                       "\"corrected\": 0.7\n    }"),
             std::string::npos)
       << with;
+}
+
+TEST(RunMetrics, PerRoomMappingTimeIsInMillisecondsUnderTiming) {
+  RunMetrics m;
+  m.room_cpu_s = {0.002, 0.0005};
+  const auto j = nlohmann::json::parse(metrics_json_text(m));
+  ASSERT_EQ(j["timing"]["room_cpu_ms"].size(), 2u);
+  EXPECT_DOUBLE_EQ(j["timing"]["room_cpu_ms"][0].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(j["timing"]["room_cpu_ms"][1].get<double>(), 0.5);
+  m.room_cpu_s.clear();
+  EXPECT_TRUE(nlohmann::json::parse(metrics_json_text(m))["timing"]["room_cpu_ms"].empty());
 }
 
 }  // namespace

@@ -195,8 +195,13 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   // The per-stage error needs the room's grids, which live only for the listener call.
   std::optional<ErrorBreakdownBuilder> breakdown;
   if (truth) breakdown.emplace(truth->surfaces, occupied_threshold);
-  bool closing_run = false;  // mapper.finish() closes the last room after the last row
+  bool closing_run = false;        // mapper.finish() closes the last room after the last row
+  std::vector<double> room_cpu_s;  // per finished room: its pipeline and EM time
+  double mapping_cpu_s = 0.0;      // the two, summed over the rooms before
   mapper.set_room_listener([&](const mapper::Asr& asr, const mapper::AsrTrace& trace) {
+    const double mapping_now_s = mapper.stats().build_time_s + mapper.stats().localization_time_s;
+    room_cpu_s.push_back(mapping_now_s - mapping_cpu_s);
+    mapping_cpu_s = mapping_now_s;
     const std::string stem = room_stem(asr.id);
     write_ros_map(trace.raw, occupied_threshold, out, "grid_" + stem, durability);
     if (breakdown) {
@@ -285,6 +290,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.rejected = stats.rejected;
   m.build_time_s = stats.build_time_s;
   m.localization_time_s = stats.localization_time_s;
+  m.room_cpu_s = room_cpu_s;
 
   try {
     const auto corrected = mapper.master_map(true);

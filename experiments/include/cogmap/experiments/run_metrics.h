@@ -51,6 +51,9 @@ struct RunMetrics {
   double wall_time_s = 0.0;          ///< run loop + metrics, figures excluded
   double build_time_s = 0.0;         ///< CPU in the ASR pipeline (mapper stats)
   double localization_time_s = 0.0;  ///< CPU in EM (mapper stats)
+  /// Per finished room, in order: time in its ASR pipeline and EM (the thesis claims it flat
+  /// however many rooms came before; issue 13).
+  std::vector<double> room_cpu_s;
 };
 
 /// The JSON text (2-space indent, keys in a fixed order, shortest round-trip doubles, null for
