@@ -21,10 +21,13 @@ std::string svg_num(double v) {
 
 }  // namespace
 
-std::string trajectory_csv(std::span<const TrajectoryRow> rows) {
+void trajectory_csv_chunks(std::span<const TrajectoryRow> rows,
+                           const std::function<void(std::string_view)>& emit,
+                           std::size_t rows_per_chunk) {
   std::string out =
       "t_s,true_x_m,true_y_m,true_theta_rad,odom_x_m,odom_y_m,odom_theta_rad,est_x_m,est_y_m,"
       "est_theta_rad\n";
+  std::size_t in_chunk = 0;
   for (const TrajectoryRow& r : rows) {
     out += f(r.t_s);
     if (r.truth) {
@@ -35,7 +38,18 @@ std::string trajectory_csv(std::span<const TrajectoryRow> rows) {
     out += "," + f(r.odometry.x_m) + "," + f(r.odometry.y_m) + "," + f(r.odometry.theta_rad);
     out += "," + f(r.estimate.x_m) + "," + f(r.estimate.y_m) + "," + f(r.estimate.theta_rad);
     out += '\n';
+    if (++in_chunk >= std::max<std::size_t>(rows_per_chunk, 1)) {
+      emit(out);
+      out.clear();
+      in_chunk = 0;
+    }
   }
+  if (!out.empty()) emit(out);
+}
+
+std::string trajectory_csv(std::span<const TrajectoryRow> rows) {
+  std::string out;
+  trajectory_csv_chunks(rows, [&](std::string_view piece) { out += piece; });
   return out;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "cogmap/experiments/run_metrics.h"
@@ -18,6 +20,20 @@ TEST(RunOutputs, TrajectoryCsvColumnsAndEmptyTruth) {
             "est_y_m,est_theta_rad\n"
             "0.1,1,2,0.5,1,2,0.5,1,2,0.5\n"
             "0.2,,,,1.25,2,-0.1,1.2,2,0\n");
+}
+
+TEST(RunOutputs, TrajectoryCsvInChunksIsTheSameText) {
+  std::vector<TrajectoryRow> rows;
+  for (int i = 0; i < 5; ++i) {
+    rows.push_back({0.1 * (i + 1), std::nullopt, {1.0 * i, 0.0, 0.0}, {1.0 * i, 0.5, 0.0}});
+  }
+  std::vector<std::string> pieces;
+  trajectory_csv_chunks(
+      rows, [&](std::string_view p) { pieces.emplace_back(p); }, 2);
+  ASSERT_EQ(pieces.size(), 3u);  // rows 1-2 (with the header), 3-4, 5
+  EXPECT_EQ(pieces[2], "0.5,,,,4,0,0,4,0.5,0\n");
+  EXPECT_EQ(pieces[0] + pieces[1] + pieces[2], trajectory_csv(rows));
+  EXPECT_EQ(std::count(pieces[1].begin(), pieces[1].end(), '\n'), 2);
 }
 
 TEST(RunOutputs, SegmentsCsv) {

@@ -339,7 +339,10 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       }
     }
 
-    mapper::io::write_file_atomic(out / "trajectory.csv", trajectory_csv(session.rows), durability);
+    mapper::io::write_file_atomic_chunks(
+        out / "trajectory.csv",
+        [&](const mapper::io::ChunkSink& emit) { trajectory_csv_chunks(session.rows, emit); },
+        durability);
     mapper::io::write_file_atomic(out / "map_segments.csv", segments_csv(corrected), durability);
     mapper::io::write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry),
                                   durability);

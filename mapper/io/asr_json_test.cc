@@ -278,6 +278,26 @@ TEST(AtomicWrite, UnsyncedStoreStillReplacesWholeFilesAndLeavesNoTemp) {
   }
 }
 
+TEST(AtomicWrite, ChunksAreWrittenInOrderAndAFailingProducerLeavesTheOldFile) {
+  const fs::path dir = fresh_dir("chunks");
+  write_file_atomic_chunks(dir / "t.csv", [](const ChunkSink& emit) {
+    emit("a,b\n");
+    emit("");
+    emit("1,2\n");
+  });
+  EXPECT_EQ(read_file(dir / "t.csv"), "a,b\n1,2\n");
+  EXPECT_THROW(write_file_atomic_chunks(dir / "t.csv",
+                                        [](const ChunkSink& emit) {
+                                          emit("half a file");
+                                          throw std::runtime_error("producer failed");
+                                        }),
+               std::runtime_error);
+  EXPECT_EQ(read_file(dir / "t.csv"), "a,b\n1,2\n");  // untouched
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_FALSE(is_temp_file_name(e.path().filename().string())) << e.path();
+  }
+}
+
 TEST(AsrGraphJson, RoundTripAndValidation) {
   AsrGraph g;
   g.add_node({0, {0.1, 0.2, 0.3}, {1.0 / 3.0, 2.0}});

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -32,8 +33,9 @@ struct Fd {
 
 }  // namespace
 
-void write_file_atomic(const std::filesystem::path& path, std::string_view content,
-                       Durability durability) {
+void write_file_atomic_chunks(const std::filesystem::path& path,
+                              const std::function<void(const ChunkSink&)>& produce,
+                              Durability durability) {
   const bool sync = durability == Durability::kSynced;
   static std::atomic<unsigned long> counter{0};
   const std::filesystem::path dir =
@@ -47,19 +49,25 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   {
     Fd file{::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
     if (file.fd < 0) fail_errno(temp, "cannot create");
-    const char* data = content.data();
-    std::size_t left = content.size();
-    while (left > 0) {
-      const ssize_t n = ::write(file.fd, data, left);
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) {
-        const int saved = errno;
-        ::unlink(temp.c_str());
-        errno = saved;
-        fail_errno(temp, "cannot write");
+    const ChunkSink emit = [&](std::string_view piece) {
+      const char* data = piece.data();
+      std::size_t left = piece.size();
+      while (left > 0) {
+        const ssize_t n = ::write(file.fd, data, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) fail_errno(temp, "cannot write");
+        data += n;
+        left -= static_cast<std::size_t>(n);
       }
-      data += n;
-      left -= static_cast<std::size_t>(n);
+    };
+    try {
+      produce(emit);
+    } catch (...) {
+      // A failed write or a failing producer leaves no temp file behind, and `path` untouched.
+      const int saved = errno;
+      ::unlink(temp.c_str());
+      errno = saved;
+      throw;
     }
     // The data must be on disk before the name points at it, or a crash could leave a
     // renamed but empty file.
@@ -79,6 +87,12 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   Fd directory{::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
   if (directory.fd < 0) fail_errno(dir, "cannot open directory");
   if (::fsync(directory.fd) != 0) fail_errno(dir, "cannot fsync directory");
+}
+
+void write_file_atomic(const std::filesystem::path& path, std::string_view content,
+                       Durability durability) {
+  write_file_atomic_chunks(
+      path, [&](const ChunkSink& emit) { emit(content); }, durability);
 }
 
 bool is_temp_file_name(const std::string& name) {

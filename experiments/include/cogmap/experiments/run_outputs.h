@@ -3,8 +3,10 @@
 /// trajectory.csv, map_segments*.csv and map.svg. Every file is written atomically.
 
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cogmap/experiments/metrics.h"
@@ -15,6 +17,11 @@ namespace cogmap::experiments {
 /// trajectory.csv: `t_s,true_x_m,true_y_m,true_theta_rad,odom_x_m,odom_y_m,odom_theta_rad,
 /// est_x_m,est_y_m,est_theta_rad`, one row a frame; true columns empty without ground truth.
 std::string trajectory_csv(std::span<const TrajectoryRow> rows);
+/// The same text in pieces of `rows_per_chunk` rows (the header goes with the first), handed
+/// to `emit` as they are made: a long run's file is written without holding it whole.
+void trajectory_csv_chunks(std::span<const TrajectoryRow> rows,
+                           const std::function<void(std::string_view)>& emit,
+                           std::size_t rows_per_chunk = 1024);
 
 /// map_segments.csv / map_segments_odom.csv: `asr_id,x1_m,y1_m,x2_m,y2_m`, world frame.
 std::string segments_csv(std::span<const mapper::Mapper::MapSegment> segments);

@@ -4,6 +4,7 @@
 /// validate everything and throw std::runtime_error naming the file and the field path.
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -62,6 +63,15 @@ AsrGraph read_asr_graph_json(const std::filesystem::path& path);
 /// side by side. Throws std::runtime_error naming the path on any failure.
 void write_file_atomic(const std::filesystem::path& path, std::string_view content,
                        Durability durability = Durability::kSynced);
+
+/// Receives one piece of a file's content.
+using ChunkSink = std::function<void(std::string_view)>;
+/// write_file_atomic for content made piece by piece: `produce` hands each piece to the sink
+/// as it is made, so a large file (a long run's trajectory) never sits whole in memory. If
+/// `produce` throws, the temp file is removed and `path` is left as it was.
+void write_file_atomic_chunks(const std::filesystem::path& path,
+                              const std::function<void(const ChunkSink&)>& produce,
+                              Durability durability = Durability::kSynced);
 
 /// True for the name of a temporary file this module or the PNG writer makes:
 /// ".<name>.tmp-<pid>-<n>" or ".<name>.tmp.<pid>.<n>".
