@@ -11,8 +11,11 @@ namespace cogmap::experiments {
 using mapper::Point2;
 using mapper::Segment;
 
-std::vector<SurfaceSample> sample_segments(std::span<const Segment> segments, double step_m) {
-  std::vector<SurfaceSample> out;
+namespace {
+
+/// Calls `visit` with each sample of sample_segments, in the same order, without storing them.
+template <typename Visit>
+void for_each_sample(std::span<const Segment> segments, double step_m, Visit&& visit) {
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const Segment& s = segments[i];
     const double length = s.length_m();
@@ -22,9 +25,19 @@ std::vector<SurfaceSample> sample_segments(std::span<const Segment> segments, do
     const double w = length / static_cast<double>(n);
     for (std::size_t k = 0; k < n; ++k) {
       const double t = (static_cast<double>(k) + 0.5) / static_cast<double>(n);
-      out.push_back({s.a + t * (s.b - s.a), i, w});
+      visit(SurfaceSample{s.a + t * (s.b - s.a), i, w});
     }
   }
+}
+
+}  // namespace
+
+std::vector<SurfaceSample> sample_segments(std::span<const Segment> segments, double step_m) {
+  std::size_t count = 0;
+  for_each_sample(segments, step_m, [&](const SurfaceSample&) { ++count; });
+  std::vector<SurfaceSample> out;
+  out.reserve(count);
+  for_each_sample(segments, step_m, [&](const SurfaceSample& s) { out.push_back(s); });
   return out;
 }
 
@@ -48,8 +61,10 @@ std::vector<SurfaceSample> visible_truth_samples(std::span<const Segment> truth,
   // The sight line stops just short of the sample: a neighbouring surface that shares the
   // sample's corner would otherwise "block" it.
   constexpr double kEndGap_m = 0.01;
+  // Samples are visited, not stored: a large building's samples would otherwise sit in
+  // memory twice (all of them, and the visible ones).
   std::vector<SurfaceSample> visible;
-  for (const SurfaceSample& s : sample_segments(truth, options.sample_step_m)) {
+  for_each_sample(truth, options.sample_step_m, [&](const SurfaceSample& s) {
     for (const Point2& pose : poses) {
       const Point2 d = pose - s.point;
       const double dist2 = d.squaredNorm();
@@ -57,15 +72,15 @@ std::vector<SurfaceSample> visible_truth_samples(std::span<const Segment> truth,
       const double dist = std::sqrt(dist2);
       if (dist <= kEndGap_m) {
         visible.push_back(s);
-        break;
+        return;
       }
       const Point2 near_sample = s.point + d * (kEndGap_m / dist);
       if (!index.blocked(near_sample, pose, s.segment)) {
         visible.push_back(s);
-        break;
+        return;
       }
     }
-  }
+  });
   return visible;
 }
 
