@@ -108,7 +108,11 @@ class EdgeExplorer final : public Controller {
         budget_(options.time_budget_s, options.distance_budget_m) {}
 
   VelocityCommand step(const NavInput& input) override {
-    if (!core_.sense(input)) return core_.stop(NavMode::kIdle);
+    // No frame, or no usable estimate: stand still (and do not call the exploration done).
+    if (!input.pose.translation().allFinite() || !std::isfinite(input.pose.theta_rad) ||
+        !core_.sense(input)) {
+      return core_.stop(NavMode::kIdle);
+    }
     if (finished_) return core_.stop(NavMode::kExploreDone);
     const double now = input.frame->time_s;
     const Point2 here = input.pose.translation();

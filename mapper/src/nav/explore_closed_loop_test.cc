@@ -133,6 +133,26 @@ TEST(FrontierExplorerLoop, ABudgetEndsTheExplorationUnfinished) {
   EXPECT_NEAR(r.time_s, 20.1, 0.15);  // the frame at which 20 s had passed
 }
 
+TEST(FrontierExplorerLoop, AnUnusableEstimateStopsTheRobotButEndsNothing) {
+  const RobotGeometry robot = p2at_geometry();
+  auto c = make_explorer(ExploreOptions{});
+  const World w = box(0, 0, 5, 4);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i < 20; ++i) {
+    const Pose2 pose{nan, 1.0, 0.0};
+    SensorFrame f = frame_at(i, w.sonar({1.0, 1.0, 0.0}, robot, i));
+    const VelocityCommand cmd = c->step({&f, pose, nullptr, &robot});
+    EXPECT_EQ(cmd.v_mps, 0.0);
+    EXPECT_EQ(cmd.w_radps, 0.0);
+  }
+  EXPECT_FALSE(c->done());
+  EXPECT_FALSE(c->trace().exploration_complete);
+  // A usable estimate again: it explores.
+  SensorFrame f = frame_at(20, w.sonar({1.0, 1.0, 0.0}, robot, 20));
+  c->step({&f, {1.0, 1.0, 0.0}, nullptr, &robot});
+  EXPECT_FALSE(c->done());
+}
+
 TEST(EdgeExplorerLoop, WalksTheRoomsEdgeAndClosesTheTour) {
   ExploreOptions o;
   o.strategy = ExploreStrategy::kEdge;

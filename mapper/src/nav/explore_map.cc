@@ -12,11 +12,19 @@ constexpr double kGrowMarginM = 8.0;  // grow in big steps: each growth copies t
 
 }  // namespace
 
-ExploreMap::ExploreMap(const ExploreMapOptions& options) : options_(options) {}
+ExploreMap::ExploreMap(const ExploreMapOptions& options) : options_(options) {
+  // Every walk over cells steps by a fraction of a cell: a zero or negative size would never end.
+  if (!(options_.cell_m >= 0.01)) options_.cell_m = 0.01;
+}
 
 ExploreMap::Cell ExploreMap::cell_of(const Point2& p) const {
-  return {static_cast<int>(std::floor((p.x() - origin_x_m_) / options_.cell_m)),
-          static_cast<int>(std::floor((p.y() - origin_y_m_) / options_.cell_m))};
+  // Far-off or non-finite points map to a cell far outside any map (never inside()), without
+  // an out-of-range float-to-int conversion.
+  const auto index = [&](double v, double origin) {
+    const double c = std::floor((v - origin) / options_.cell_m);
+    return std::isfinite(c) ? static_cast<int>(std::clamp(c, -1e9, 1e9)) : -1000000000;
+  };
+  return {index(p.x(), origin_x_m_), index(p.y(), origin_y_m_)};
 }
 
 Point2 ExploreMap::center_of(Cell c) const {

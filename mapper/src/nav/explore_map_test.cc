@@ -311,5 +311,22 @@ TEST_F(ExploreMap, ReadingBeyondMaxRangeIsNoEcho) {
   EXPECT_TRUE(at_max.seen(at_max.cell_of({2.4, 0.0})));
 }
 
+TEST_F(ExploreMap, FarOffOrNonFinitePosesChangeNothingAndMapToNoCell) {
+  ping({echo(1.0)});
+  const std::size_t before = map_.seen_count();
+  const int width = map_.width();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ping({echo(1.0)}, {nan, 0.0, 0.0});
+  ping({echo(1.0)}, {0.0, 0.0, nan});
+  ping({echo(1.0)}, {1e12, -1e12, 0.0});
+  map_.mark_body(Point2(nan, 1.0), 0.3);
+  EXPECT_EQ(map_.seen_count(), before);
+  EXPECT_EQ(map_.width(), width);
+  for (const Point2& p : {Point2(nan, 0.0), Point2(1e12, 0.0), Point2(-1e300, 1e300)}) {
+    EXPECT_FALSE(map_.inside(map_.cell_of(p)));
+    EXPECT_FALSE(map_.seen(map_.cell_of(p)));
+  }
+}
+
 }  // namespace
 }  // namespace cogmap::mapper

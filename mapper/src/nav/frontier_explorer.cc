@@ -4,6 +4,7 @@
 
 #include "nav/frontier_explorer.h"
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -41,7 +42,11 @@ class FrontierExplorer final : public Controller {
         budget_(options.time_budget_s, options.distance_budget_m) {}
 
   VelocityCommand step(const NavInput& input) override {
-    if (input.frame == nullptr) return stopped(NavMode::kIdle);
+    // No frame, or no usable estimate: stand still (and do not call the exploration done).
+    if (input.frame == nullptr || !input.pose.translation().allFinite() ||
+        !std::isfinite(input.pose.theta_rad)) {
+      return stopped(NavMode::kIdle);
+    }
     map_.add_frame(*input.frame, input.pose, input.robot ? *input.robot : default_robot_);
     if (finished_) return stopped(NavMode::kExploreDone);
     const double now = input.frame->time_s;
