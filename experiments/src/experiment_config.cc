@@ -60,7 +60,10 @@ ControllerConfig parse_controller(const Node& block) {
     type.fail("unknown controller type '" + t + "' (expected route, explore or none)");
   }
   c.speed_mps = number_in(block, "speed_mps", 0.01, 2.0, c.speed_mps);
-  c.waypoint_tolerance_m = number_above(block, "waypoint_tolerance_m", 0.0, c.waypoint_tolerance_m);
+  // A tolerance beyond a room's size would make every waypoint (and every explorer goal)
+  // "reached" where it stands.
+  c.waypoint_tolerance_m =
+      number_in(block, "waypoint_tolerance_m", 0.01, 5.0, c.waypoint_tolerance_m);
   if (const auto wps = block.child("waypoints")) {
     wps->expect_sequence();
     for (std::size_t i = 0; i < wps->size(); ++i) {

@@ -334,8 +334,10 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       add_contacts(m.nav, session.rows, truth->surfaces, geometry);
       if (experiment.controller.type == ControllerKind::kExplore) {
         const TrueRooms rooms = count_true_rooms(truth->surfaces, session.rows);
-        m.nav.rooms_total_true = rooms.total;
-        m.nav.rooms_visited_true = rooms.visited;
+        if (rooms.measurable) {  // else null: a world too large to rasterise finely
+          m.nav.rooms_total_true = rooms.total;
+          m.nav.rooms_visited_true = rooms.visited;
+        }
       }
     }
 

@@ -194,6 +194,7 @@ TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces,
                            std::span<const TrajectoryRow> rows, const TrueRoomsOptions& options) {
   const Raster r = make_raster(surfaces, options);
   if (r.cells() == 0) return {};
+  if (r.res > options.max_measurable_resolution_m) return {0, 0, false};
 
   // 1. Walls. Half a cell diagonal at least, so a wall never leaks between diagonal cells.
   const double h = std::max(options.wall_half_thickness_m, 0.75 * r.res);

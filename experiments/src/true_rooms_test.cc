@@ -324,9 +324,17 @@ TEST(TrueRooms, HugeWorldIsCoarsenedNotExhausted) {
   TrueRoomsOptions small;
   small.max_cells = 100'000;
   const std::vector<TrajectoryRow> rows{row_at(1000.0, 1000.0)};
+  // Coarsened to ~6 m cells: far past the 0.1 m at which a door stays open, so flagged...
   const TrueRooms r = count_true_rooms(walls, rows, small);
-  EXPECT_EQ(r.total, 1u);
-  EXPECT_EQ(r.visited, 1u);
+  EXPECT_FALSE(r.measurable);
+  EXPECT_EQ(r.total, 0u);
+  // ...while the count itself still works at that scale when asked to.
+  TrueRoomsOptions lenient = small;
+  lenient.max_measurable_resolution_m = 10.0;
+  const TrueRooms coarse = count_true_rooms(walls, rows, lenient);
+  EXPECT_TRUE(coarse.measurable);
+  EXPECT_EQ(coarse.total, 1u);
+  EXPECT_EQ(coarse.visited, 1u);
 }
 
 }  // namespace

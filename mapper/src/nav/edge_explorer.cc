@@ -116,7 +116,9 @@ class EdgeExplorer final : public Controller {
     if (finished_) return core_.stop(NavMode::kExploreDone);
     const double now = input.frame->time_s;
     const Point2 here = input.pose.translation();
-    if (budget_.spent(now, here)) return finish(false);
+    if (budget_.spent(now, input.frame->odometry.translation())) return finish(false);
+    // Turning is counted every cycle, recoveries and doorways included.
+    track_turn(input.pose.theta_rad);
     core_.check_stuck(input);
     if (const auto cmd = core_.recover(input, input.pose.theta_rad + 0.5 * kPi)) return *cmd;
     if (door_.active()) {
@@ -131,7 +133,6 @@ class EdgeExplorer final : public Controller {
       edge_end_ =
           right_end(core_.field().points(), input.pose, 0.5 * core_.robot().width_m, e.lost_m);
     }
-    track_turn(input.pose.theta_rad);
     switch (state_) {
       case State::kSeek:
         // Straight ahead until something is near enough to follow.
@@ -274,7 +275,7 @@ class EdgeExplorer final : public Controller {
     pulses_.resize(robot.sonars.size());
     for (const SonarReading& r : frame.sonar) {
       if (r.index < 0 || static_cast<std::size_t>(r.index) >= pulses_.size()) continue;
-      if (!std::isfinite(r.range_m)) continue;
+      if (!std::isfinite(r.range_m) || r.range_m < robot.sonar_min_range_m) continue;
       const bool echo = r.echo && r.range_m <= robot.sonar_max_range_m;
       pulses_[static_cast<std::size_t>(r.index)] = {echo ? r.range_m : kInf, frame.time_s};
     }
@@ -373,6 +374,13 @@ class EdgeExplorer final : public Controller {
   VelocityCommand pivot(const NavInput& input) {
     const EdgeOptions& e = options_.edge;
     const Point2 here = input.pose.translation();
+    if (turned_rad_ > 2.5 * kPi) {
+      // Round and round with nothing heard on the right (glass, a low obstacle, an end point
+      // that was a ghost): set off straight ahead for the next edge instead.
+      state_ = State::kSeek;
+      seek_rad_ = input.pose.theta_rad;
+      return core_.stop(NavMode::kEdgePivot);
+    }
     if (!edge_end_ || turned_rad_ > 1.75 * kPi) {
       return arc_right(sides_now(input), 1.0);
     }

@@ -94,6 +94,7 @@ LoopRun drive(Controller& c, const World& w, Pose2 pose, double max_s) {
   const int frames = static_cast<int>(max_s / testing::kCycleS);
   for (int i = 0; i < frames && !c.done(); ++i) {
     SensorFrame f = frame_at(i, w.sonar(pose, robot, i));
+    f.odometry = pose;  // exact odometry
     pose = integrate(pose, c.step({&f, pose, nullptr, &robot}));
     r.min_clearance_m = std::min(r.min_clearance_m, w.clearance_m(pose.translation()));
     r.max_x_m = std::max(r.max_x_m, pose.x_m);
@@ -151,6 +152,35 @@ TEST(FrontierExplorerLoop, AnUnusableEstimateStopsTheRobotButEndsNothing) {
   SensorFrame f = frame_at(20, w.sonar({1.0, 1.0, 0.0}, robot, 20));
   c->step({&f, {1.0, 1.0, 0.0}, nullptr, &robot});
   EXPECT_FALSE(c->done());
+}
+
+TEST(FrontierExplorerLoop, ASonarThatStartsLateDoesNotEndTheExploration) {
+  // A real P2-AT's sonar starts a moment after its motors: 3 s of frames without a reading.
+  const RobotGeometry robot = p2at_geometry();
+  auto c = make_explorer(ExploreOptions{});
+  const World w = box(0, 0, 5, 4);
+  Pose2 pose{1.0, 1.0, 0.3};
+  for (int i = 0; i < 30; ++i) {
+    SensorFrame f = frame_at(i);
+    f.odometry = pose;
+    pose = integrate(pose, c->step({&f, pose, nullptr, &robot}));
+  }
+  EXPECT_FALSE(c->done());
+  EXPECT_FALSE(c->trace().exploration_complete);
+  const LoopRun r = drive(*c, w, pose, 400.0);  // then the sonar: the room is explored
+  EXPECT_TRUE(r.complete);
+  EXPECT_GT(r.min_clearance_m, 0.4);
+}
+
+TEST(HeadingExplorerLoop, ABudgetEndsIt) {
+  ExploreOptions o;
+  o.strategy = ExploreStrategy::kHeading;
+  o.distance_budget_m = 3.0;  // by the odometry
+  auto c = make_explorer(o);
+  const LoopRun r = drive(*c, box(0, 0, 5, 4), {1.0, 1.0, 0.0}, 400.0);
+  EXPECT_TRUE(r.done);
+  EXPECT_FALSE(r.complete);   // the heading explorer never completes
+  EXPECT_LT(r.time_s, 30.0);  // 3 m at up to 0.5 m/s, with turning
 }
 
 TEST(EdgeExplorerLoop, WalksTheRoomsEdgeAndClosesTheTour) {

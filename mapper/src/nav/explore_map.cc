@@ -112,6 +112,7 @@ void ExploreMap::add_frame(const SensorFrame& frame, const Pose2& pose,
     // A reading beyond the sonar's range is no echo: it proves only that nothing answered.
     const bool echo = r.echo && r.range_m <= robot.sonar_max_range_m;
     const SonarMount& m = robot.sonars[static_cast<std::size_t>(r.index)];
+    ++readings_;
     sweep(pose.transform(Point2(m.x_m, m.y_m)), pose.theta_rad + m.heading_rad,
           echo ? std::optional<double>(r.range_m) : std::nullopt, robot);
   }

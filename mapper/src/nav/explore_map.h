@@ -53,6 +53,8 @@ class ExploreMap {
   }
   /// Cells seen so far (grows as exploration goes on).
   std::size_t seen_count() const { return seen_count_; }
+  /// Sonar readings integrated so far (valid ones, echo or not).
+  std::size_t readings() const { return readings_; }
 
  private:
   /// One reading from a transducer at `origin` looking along `axis_rad`, with an echo at
@@ -75,6 +77,7 @@ class ExploreMap {
   std::vector<float> misses_;  // weight of the beams that swept it free
   std::vector<std::uint8_t> seen_;
   std::size_t seen_count_ = 0;
+  std::size_t readings_ = 0;
   std::vector<Cell> swept_, hit_;  // one beam's cells, reused
 
   void mark_seen(std::size_t i) {

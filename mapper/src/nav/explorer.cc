@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "nav/explore_budget.h"
 #include "nav/frontier_explorer.h"
 #include "nav/nav_core.h"
 
@@ -24,10 +25,16 @@ CoreOptions core_options(const ExploreOptions& o) {
 class Explorer final : public Controller {
  public:
   explicit Explorer(const ExploreOptions& options)
-      : options_(options), core_(core_options(options)) {}
+      : options_(options),
+        core_(core_options(options)),
+        budget_(options.time_budget_s, options.distance_budget_m) {}
 
   VelocityCommand step(const NavInput& input) override {
     if (!core_.sense(input)) return core_.stop(NavMode::kIdle);
+    if (budget_spent_ || budget_.spent(input.frame->time_s, input.frame->odometry.translation())) {
+      budget_spent_ = true;  // the only way this explorer ends (never complete)
+      return core_.stop(NavMode::kExploreDone);
+    }
     if (!started_) {
       heading_rad_ = input.pose.theta_rad;
       started_ = true;
@@ -49,7 +56,7 @@ class Explorer final : public Controller {
     return core_.drive_toward(input, heading_rad_);
   }
 
-  bool done() const override { return false; }
+  bool done() const override { return budget_spent_; }
   const NavTrace& trace() const override { return core_.trace(); }
 
  private:
@@ -115,6 +122,8 @@ class Explorer final : public Controller {
 
   ExploreOptions options_;
   NavCore core_;
+  ExploreBudget budget_;
+  bool budget_spent_ = false;
   bool started_ = false;
   bool committed_ = false;      // a goal direction has been chosen
   Point2 chosen_at_{0.0, 0.0};  // where, and when, it was chosen

@@ -4,6 +4,7 @@
 
 #include "nav/frontier_explorer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -47,11 +48,15 @@ class FrontierExplorer final : public Controller {
         !std::isfinite(input.pose.theta_rad)) {
       return stopped(NavMode::kIdle);
     }
-    map_.add_frame(*input.frame, input.pose, input.robot ? *input.robot : default_robot_);
+    const RobotGeometry& robot = input.robot ? *input.robot : default_robot_;
+    map_.add_frame(*input.frame, input.pose, robot);
     if (finished_) return stopped(NavMode::kExploreDone);
     const double now = input.frame->time_s;
     const Point2 here = input.pose.translation();
-    if (budget_.spent(now, here)) return finish(false);
+    if (budget_.spent(now, input.frame->odometry.translation())) return finish(false);
+    // A position the map cannot hold (beyond max_span_m): stand, decide nothing.
+    if (!map_.inside(map_.cell_of(here))) return stopped(NavMode::kIdle);
+    const std::size_t ring = std::max<std::size_t>(robot.sonars.size(), 1);
     track_progress(here, now);
     // A waypoint given up, or a recovery (the robot got stuck: a pocket behind furniture, a
     // gap narrower than the sensed one): this goal is not worth a second try.
@@ -64,8 +69,17 @@ class FrontierExplorer final : public Controller {
     if (goal_ && follower_->done() && !failed) {
       // Arrived: hold still for a couple of sonar cycles (the ring looks all round; turning
       // to face the frontier costs heading, 1-2 % of every turn on a skid-steer base).
-      if (!arrived_s_) arrived_s_ = now;
-      if (now - *arrived_s_ < options_.look_hold_s) return stopped(NavMode::kLook);
+      // The frontier is judged on what the ring heard while holding: at least one pulse of
+      // every transducer, or three holds' time if the sonar is silent.
+      if (!arrived_s_) {
+        arrived_s_ = now;
+        arrived_readings_ = map_.readings();
+      }
+      const bool heard = map_.readings() >= arrived_readings_ + ring;
+      if (now - *arrived_s_ < options_.look_hold_s ||
+          (!heard && now - *arrived_s_ < 3.0 * options_.look_hold_s)) {
+        return stopped(NavMode::kLook);
+      }
     }
     if (goal_ && (failed || follower_->done())) {
       // Looked at from near (its frontier should be gone; if the sonar still cannot see it
@@ -80,7 +94,12 @@ class FrontierExplorer final : public Controller {
     if (!goal_) {
       const auto plan =
           plan_to_frontier(map_, input.pose, banned_, options_.ban_radius_m, options_.frontier);
-      if (!plan) return finish(true);
+      if (!plan) {
+        // Nothing left to explore, unless the sonar has not yet been heard round once (a
+        // real robot's sonar starts a moment after its motors): then wait, and decide later.
+        if (map_.readings() < ring) return stopped(NavMode::kIdle);
+        return finish(true);
+      }
       progress_s_ = now;
       goal_ = plan->goal;
       target_ = plan->frontier;
@@ -140,8 +159,9 @@ class FrontierExplorer final : public Controller {
   std::size_t seen_at_progress_ = 0;
   std::size_t skipped_seen_ = 0;
   std::size_t recoveries_seen_ = 0;
-  std::vector<Point2> banned_;       // frontier cells given up or looked at in vain
-  std::optional<double> arrived_s_;  // arrived at the goal: holding still since
+  std::vector<Point2> banned_;        // frontier cells given up or looked at in vain
+  std::optional<double> arrived_s_;   // arrived at the goal: holding still since...
+  std::size_t arrived_readings_ = 0;  // ...with this many readings integrated
 };
 
 }  // namespace

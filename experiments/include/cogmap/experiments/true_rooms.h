@@ -18,6 +18,9 @@ namespace cogmap::experiments {
 struct TrueRoomsOptions {
   /// Raster cell: well below the narrowest opening that matters (doors, 0.9-1.2 m).
   double resolution_m = 0.05;
+  /// Coarser than this (max_cells forced it) and a 0.9 m door between walls thickened by
+  /// 0.75 cell each side keeps under 5 cells: the result is flagged not measurable.
+  double max_measurable_resolution_m = 0.1;
   /// Free border around the surfaces' bounding box, wider than door_close_radius_m, so the
   /// outside of the building stays one component that touches the raster border.
   double margin_m = 1.0;
@@ -39,6 +42,9 @@ struct TrueRoomsOptions {
 struct TrueRooms {
   std::size_t total = 0;  ///< reachable enclosed room-core components of at least min_room_area_m2
   std::size_t visited = 0;  ///< rooms with some row's true position in their core
+  /// False when the raster had to be coarsened past max_measurable_resolution_m (a world so
+  /// large that a 0.9 m door may close in it): the counts are then not to be trusted.
+  bool measurable = true;
 };
 
 /// Counts the rooms of `surfaces` (world frame, walls and obstacle outlines) and the rooms a

@@ -273,7 +273,9 @@ struct ExploreMapOptions {
                                        ///< beyond, but a wall met at a shallow angle (over 40-60°
                                        ///< incidence) reflects the pulse away too, so a wall sensed
                                        ///< only obliquely loses little
-  double max_span_m = 600.0;           ///< the map never grows beyond this in x or y
+  double max_span_m = 200.0;           ///< the map never grows beyond this in x or y: 1001²
+                                       ///< cells (8 MB), ~55 MB while a plan runs (the room grid's
+                                       ///< own bound is 200 m too, MapperOptions)
 };
 
 /// Choosing the next frontier (the edge of what has been seen) and the way to it.
@@ -290,8 +292,8 @@ struct FrontierOptions {
                                        ///< own frontiers first, so it is finished before it is left
   int min_frontier_cells = 1;          ///< smaller frontier pieces are ignored. 1: a doorway the
                                        ///< side beams smear from both jambs often shows one open
-                                       ///< cell; measured 15/20 runs with every room visited
-                                       ///< against 12/20 with 3 (docs/algorithms.md)
+                                       ///< cell; on generated buildings 13/18 runs entered every
+                                       ///< room against 5/18 with 3 (docs/algorithms.md)
   double view_m = 0.9;                 ///< the robot drives to where a frontier cell is this near
                                        ///< (in sight), within ExploreMapOptions::wall_sense_m
   double goal_clearance_m = 0.5;       ///< ...preferring places this clear of obstacles (the body's
@@ -369,8 +371,9 @@ struct ExploreOptions {
                                       ///< sonar ring, fired every ~0.4 s) before the frontier,
                                       ///< if still there, is given up
   double time_budget_s = 0.0;         ///< stop after this long (0 = no budget); not complete
-  double distance_budget_m = 0.0;     ///< stop after this much travel (0 = no budget)
-  // Both strategies:
+  double distance_budget_m = 0.0;     ///< stop after this much travel by the odometry (0 = no
+                                      ///< budget); both budgets apply to every strategy
+  // Every strategy:
   double speed_mps = 0.5;  ///< thesis §4: 0.5 m/s
   double max_turn_rate_radps = 1.0;
   VfhOptions vfh;
