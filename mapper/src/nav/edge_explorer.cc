@@ -115,7 +115,6 @@ class EdgeExplorer final : public Controller {
     }
     if (finished_) return core_.stop(NavMode::kExploreDone);
     const double now = input.frame->time_s;
-    const Point2 here = input.pose.translation();
     if (budget_.spent(now, input.frame->odometry.translation())) return finish(false);
     // Turning is counted every cycle, recoveries and doorways included.
     track_turn(input.pose.theta_rad);
@@ -133,134 +132,14 @@ class EdgeExplorer final : public Controller {
       edge_end_ =
           right_end(core_.field().points(), input.pose, 0.5 * core_.robot().width_m, e.lost_m);
     }
-    switch (state_) {
-      case State::kSeek:
-        // Straight ahead until something is near enough to follow.
-        if (sides.ahead_m < e.follow_m || sides.right_m < e.follow_m + 0.2) {
-          begin_follow();
-        } else {
-          return core_.drive_toward(input, seek_heading_rad(input.pose));
-        }
-        break;
-      case State::kAcquire:
-        // After a doorway (or a lost edge): bear right until the edge is back.
-        if (sides.right_m < e.follow_m + 0.3 || sides.ahead_m < e.corner_clearance_m ||
-            turned_rad_ > 1.5 * kPi) {
-          begin_follow();
-        } else {
-          return arc_right(sides, 1.0);
-        }
-        break;
-      case State::kEndOfEdge:
-      case State::kCorner:
-      case State::kCross:
-      case State::kPivot:
-      case State::kFollow:
-        break;
-    }
-    if (state_ == State::kCross) {
-      // The obstacle memory still holds what the side transducer painted into the gap: the
-      // crossing's own lane check (drive_direct) stops the body, not the corner rule.
-      if ((here - cross_from_).norm() < e.cross_m && now - cross_s_ < e.cross_timeout_s) {
-        // Keep to the middle of the gap while the side transducers see both jambs.
-        double rad = cross_rad_;
-        if (sides.left_m < 1.0 && sides.right_m < 1.0) {
-          rad += std::clamp(0.8 * (sides.left_m - sides.right_m), -0.3, 0.3);
-        }
-        return core_.drive_direct(input, rad, options_.door.speed_mps, NavMode::kDoorCross);
-      }
-      ++crossings_;
-      core_.trace().door_passages = door_.crossed() + crossings_;
-      state_ = State::kAcquire;
-      turned_rad_ = 0.0;
-      return arc_right(sides, 1.0);
-    }
+    if (const auto cmd = seek_or_acquire(input, sides)) return *cmd;
+    if (state_ == State::kCross) return cross(input, sides);
     const bool turning_to_gap =
-        state_ == State::kEndOfEdge && (here - end_pose_.translation()).norm() >= e.end_advance_m;
-    if (sides.ahead_m < e.corner_clearance_m && !turning_to_gap && state_ != State::kCorner) {
-      state_ = State::kCorner;
-      turned_rad_ = 0.0;
-    }
-    if (state_ == State::kCorner) {
-      // An inner corner (or something in the way): turn left on the spot until the way ahead
-      // is clear by a margin (without it, following's pull to the right brings the corner
-      // back at once and the robot dithers on the spot).
-      if ((sides.ahead_m < e.corner_clearance_m + e.corner_margin_m ||
-           -turned_rad_ < e.corner_min_turn_rad) &&
-          -turned_rad_ < kPi) {
-        core_.trace().mode = NavMode::kEdgeCorner;
-        // Creep forward while there is room: an arc slips less than a turn on the spot.
-        const double v = sides.ahead_m > e.corner_creep_from_m ? e.corner_creep_mps : 0.0;
-        return core_.sent({v, 0.6 * core_.max_turn_radps()});
-      }
-      begin_follow();
-    }
-    // The edge continues while the foremost right transducer still hears it (the rear one
-    // hears the wall before a doorway until the robot is halfway past).
-    if (sides.right_front_m < e.lost_m && !turning_to_gap) {
-      if (state_ != State::kFollow && (state_ != State::kPivot || turned_rad_ > 0.25 * kPi)) {
-        begin_follow();
-      }
-      if (state_ == State::kFollow) {
-        if (steady(sides)) {
-          if (!loop_start_) {
-            loop_start_ = input.pose;
-            loop_start_m_ = budget_.travelled_m();
-          } else if (loop_closed(input.pose)) {
-            return finish(true);
-          }
-        }
-        return follow(sides);
-      }
-    }
-    // The edge has ended on the right: a doorway, or the end of a wall.
-    if (state_ == State::kFollow) {
-      state_ = State::kEndOfEdge;
-      end_s_ = now;
-      end_pose_ = input.pose;
-      turned_rad_ = 0.0;
-      facing_s_.reset();
-    }
-    if (state_ == State::kEndOfEdge) {
-      // A doorway shows to the side transducer as the edge ending; the door behaviour finds
-      // it from the front (the ±10° and ±30° transducers see through it head-on). So: on to
-      // about the doorway's middle, face it, and look.
-      const double advanced = (here - end_pose_.translation()).norm();
-      const double face_rad = end_pose_.theta_rad - 0.5 * kPi;
-      if (advanced < e.end_advance_m && now - end_s_ < 3.0) {
-        return core_.drive_direct(input, end_pose_.theta_rad, e.pivot_speed_mps,
-                                  NavMode::kEdgeFollow);
-      }
-      const double error = wrap_angle_rad(face_rad - input.pose.theta_rad);
-      if (!facing_s_) {
-        if (std::abs(error) > 10.0 * kPi / 180.0 && now - end_s_ < 6.0) {
-          core_.trace().mode = NavMode::kEdgePivot;
-          return core_.sent(
-              {0.0, std::clamp(1.5 * error, -core_.max_turn_radps(), core_.max_turn_radps())});
-        }
-        facing_s_ = now;
-      }
-      if (const auto cmd = look_for_door(input, face_rad)) return *cmd;
-      const auto ahead = front_pulses_since(*facing_s_);
-      // A jamb at a beam's edge answers one of the forward pair (a 1 m door spans ±30° at
-      // 0.9 m); a wall answers both.
-      if (ahead && ahead->farthest_m > e.gap_clear_m) {
-        state_ = State::kCross;
-        cross_from_ = here;
-        cross_s_ = now;
-        cross_rad_ = face_rad;
-        // Lean away from the jamb that answered.
-        if (ahead->left_m < e.gap_clear_m) cross_rad_ -= e.cross_lean_rad;
-        if (ahead->right_m < e.gap_clear_m) cross_rad_ += e.cross_lean_rad;
-        return core_.drive_direct(input, cross_rad_, options_.door.speed_mps, NavMode::kDoorCross);
-      } else if (now - *facing_s_ < e.door_search_s) {
-        return core_.stop(NavMode::kEdgePivot);
-      } else {
-        state_ = State::kPivot;
-        turned_rad_ = 0.5 * kPi;  // the face turn counts toward the pivot
-      }
-    }
-    return pivot(input);
+        state_ == State::kEndOfEdge &&
+        (input.pose.translation() - end_pose_.translation()).norm() >= e.end_advance_m;
+    if (const auto cmd = corner(sides, turning_to_gap)) return *cmd;
+    if (const auto cmd = along_edge(input, sides, turning_to_gap)) return *cmd;
+    return end_of_edge(input);
   }
 
   bool done() const override { return finished_; }
@@ -269,6 +148,141 @@ class EdgeExplorer final : public Controller {
  private:
   enum class State { kSeek, kFollow, kEndOfEdge, kCross, kPivot, kAcquire, kCorner };
   static constexpr double kPi = std::numbers::pi;
+
+  /// kSeek: straight ahead until something is near enough to follow. kAcquire (after a
+  /// doorway): bear right until the edge is back. nullopt once following begins.
+  std::optional<VelocityCommand> seek_or_acquire(const NavInput& input, const Sides& sides) {
+    const EdgeOptions& e = options_.edge;
+    if (state_ == State::kSeek) {
+      if (sides.ahead_m >= e.follow_m && sides.right_m >= e.follow_m + 0.2) {
+        return core_.drive_toward(input, seek_heading_rad(input.pose));
+      }
+      begin_follow();
+    } else if (state_ == State::kAcquire) {
+      if (sides.right_m >= e.follow_m + 0.3 && sides.ahead_m >= e.corner_clearance_m &&
+          turned_rad_ <= 1.5 * kPi) {
+        return arc_right(sides, 1.0);
+      }
+      begin_follow();
+    }
+    return std::nullopt;
+  }
+
+  /// kCross: through the gap along cross_rad_, then find the edge on the right again. The
+  /// obstacle memory still holds what the side transducer painted into the gap: the
+  /// crossing's own lane check (drive_direct) stops the body, not the corner rule.
+  VelocityCommand cross(const NavInput& input, const Sides& sides) {
+    const EdgeOptions& e = options_.edge;
+    const double now = input.frame->time_s;
+    if ((input.pose.translation() - cross_from_).norm() < e.cross_m &&
+        now - cross_s_ < e.cross_timeout_s) {
+      // Keep to the middle of the gap while the side transducers see both jambs.
+      double rad = cross_rad_;
+      if (sides.left_m < 1.0 && sides.right_m < 1.0) {
+        rad += std::clamp(0.8 * (sides.left_m - sides.right_m), -0.3, 0.3);
+      }
+      return core_.drive_direct(input, rad, options_.door.speed_mps, NavMode::kDoorCross);
+    }
+    ++crossings_;
+    core_.trace().door_passages = door_.crossed() + crossings_;
+    state_ = State::kAcquire;
+    turned_rad_ = 0.0;
+    return arc_right(sides, 1.0);
+  }
+
+  /// An inner corner (or something in the way): turn left on the spot until the way ahead is
+  /// clear by a margin (without it, following's pull to the right brings the corner back at
+  /// once and the robot dithers on the spot). nullopt when there is no corner to turn.
+  std::optional<VelocityCommand> corner(const Sides& sides, bool turning_to_gap) {
+    const EdgeOptions& e = options_.edge;
+    if (sides.ahead_m < e.corner_clearance_m && !turning_to_gap && state_ != State::kCorner) {
+      state_ = State::kCorner;
+      turned_rad_ = 0.0;
+    }
+    if (state_ != State::kCorner) return std::nullopt;
+    if ((sides.ahead_m < e.corner_clearance_m + e.corner_margin_m ||
+         -turned_rad_ < e.corner_min_turn_rad) &&
+        -turned_rad_ < kPi) {
+      core_.trace().mode = NavMode::kEdgeCorner;
+      // Creep forward while there is room: an arc slips less than a turn on the spot.
+      const double v = sides.ahead_m > e.corner_creep_from_m ? e.corner_creep_mps : 0.0;
+      return core_.sent({v, 0.6 * core_.max_turn_radps()});
+    }
+    begin_follow();
+    return std::nullopt;
+  }
+
+  /// Following, while the foremost right transducer still hears the edge (the rear one hears
+  /// the wall before a doorway until the robot is halfway past); closes the tour when back
+  /// where it began. nullopt when the edge has ended.
+  std::optional<VelocityCommand> along_edge(const NavInput& input, const Sides& sides,
+                                            bool turning_to_gap) {
+    const EdgeOptions& e = options_.edge;
+    if (sides.right_front_m >= e.lost_m || turning_to_gap) return std::nullopt;
+    if (state_ != State::kFollow && (state_ != State::kPivot || turned_rad_ > 0.25 * kPi)) {
+      begin_follow();
+    }
+    if (state_ != State::kFollow) return std::nullopt;
+    if (steady(sides)) {
+      if (!loop_start_) {
+        loop_start_ = input.pose;
+        loop_start_m_ = budget_.travelled_m();
+      } else if (loop_closed(input.pose)) {
+        return finish(true);
+      }
+    }
+    return follow(sides);
+  }
+
+  /// The edge has ended on the right: a doorway, or the end of a wall. A doorway shows to the
+  /// side transducer as the edge ending; the forward transducers see through it head-on. So:
+  /// on to about the doorway's middle, face it, look, and cross; else round the end (pivot).
+  VelocityCommand end_of_edge(const NavInput& input) {
+    const EdgeOptions& e = options_.edge;
+    const double now = input.frame->time_s;
+    const Point2 here = input.pose.translation();
+    if (state_ == State::kFollow) {
+      state_ = State::kEndOfEdge;
+      end_s_ = now;
+      end_pose_ = input.pose;
+      turned_rad_ = 0.0;
+      facing_s_.reset();
+    }
+    if (state_ != State::kEndOfEdge) return pivot(input);
+    const double advanced = (here - end_pose_.translation()).norm();
+    const double face_rad = end_pose_.theta_rad - 0.5 * kPi;
+    if (advanced < e.end_advance_m && now - end_s_ < 3.0) {
+      return core_.drive_direct(input, end_pose_.theta_rad, e.pivot_speed_mps,
+                                NavMode::kEdgeFollow);
+    }
+    const double error = wrap_angle_rad(face_rad - input.pose.theta_rad);
+    if (!facing_s_) {
+      if (std::abs(error) > 10.0 * kPi / 180.0 && now - end_s_ < 6.0) {
+        core_.trace().mode = NavMode::kEdgePivot;
+        return core_.sent(
+            {0.0, std::clamp(1.5 * error, -core_.max_turn_radps(), core_.max_turn_radps())});
+      }
+      facing_s_ = now;
+    }
+    if (const auto cmd = look_for_door(input, face_rad)) return *cmd;
+    const auto ahead = front_pulses_since(*facing_s_);
+    // A jamb at a beam's edge answers one of the forward pair (a 1 m door spans ±30° at
+    // 0.9 m); a wall answers both.
+    if (ahead && ahead->farthest_m > e.gap_clear_m) {
+      state_ = State::kCross;
+      cross_from_ = here;
+      cross_s_ = now;
+      cross_rad_ = face_rad;
+      // Lean away from the jamb that answered.
+      if (ahead->left_m < e.gap_clear_m) cross_rad_ -= e.cross_lean_rad;
+      if (ahead->right_m < e.gap_clear_m) cross_rad_ += e.cross_lean_rad;
+      return core_.drive_direct(input, cross_rad_, options_.door.speed_mps, NavMode::kDoorCross);
+    }
+    if (now - *facing_s_ < e.door_search_s) return core_.stop(NavMode::kEdgePivot);
+    state_ = State::kPivot;
+    turned_rad_ = 0.5 * kPi;  // the face turn counts toward the pivot
+    return pivot(input);
+  }
 
   void remember_pulses(const SensorFrame& frame) {
     const RobotGeometry& robot = core_.robot();
