@@ -188,6 +188,21 @@ std::optional<std::size_t> start_cell(const Raster& r, std::span<const Trajector
   return best;
 }
 
+/// Calls `visit` with each 4-connected neighbour of cell `c` inside the raster.
+template <typename Visit>
+void for_each_neighbour4(const Raster& r, std::size_t c, Visit&& visit) {
+  const std::size_t i = c % r.nx, j = c / r.nx;
+  if (i > 0) visit(c - 1);
+  if (i + 1 < r.nx) visit(c + 1);
+  if (j > 0) visit(c - r.nx);
+  if (j + 1 < r.ny) visit(c + r.nx);
+}
+
+bool on_border(const Raster& r, std::size_t c) {
+  const std::size_t i = c % r.nx, j = c / r.nx;
+  return i == 0 || j == 0 || i + 1 == r.nx || j + 1 == r.ny;
+}
+
 }  // namespace
 
 TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces,
@@ -222,17 +237,13 @@ TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces,
     while (!stack.empty()) {
       const std::size_t c = stack.back();
       stack.pop_back();
-      const std::size_t i = c % r.nx, j = c / r.nx;
       const auto visit = [&](std::size_t n) {
         if (d2[n] > 0.5f && label[n] == kUnlabelled) {  // not wall: d2 >= 1 off wall cells
           label[n] = kReached;
           stack.push_back(n);
         }
       };
-      if (i > 0) visit(c - 1);
-      if (i + 1 < r.nx) visit(c + 1);
-      if (j > 0) visit(c - r.nx);
-      if (j + 1 < r.ny) visit(c + r.nx);
+      for_each_neighbour4(r, c, visit);
     }
   }
 
@@ -255,8 +266,7 @@ TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces,
       const std::size_t c = stack.back();
       stack.pop_back();
       ++count;
-      const std::size_t i = c % r.nx, j = c / r.nx;
-      border = border || i == 0 || j == 0 || i + 1 == r.nx || j + 1 == r.ny;
+      border = border || on_border(r, c);
       const auto visit = [&](std::size_t n) {
         if (is_core(n)) {
           reached = reached || label[n] == kReached;
@@ -264,10 +274,7 @@ TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces,
           stack.push_back(n);
         }
       };
-      if (i > 0) visit(c - 1);
-      if (i + 1 < r.nx) visit(c + 1);
-      if (j > 0) visit(c - r.nx);
-      if (j + 1 < r.ny) visit(c + r.nx);
+      for_each_neighbour4(r, c, visit);
     }
     const double area_m2 = static_cast<double>(count) * r.res * r.res;
     const bool room = !border && reached && area_m2 >= options.min_room_area_m2;
