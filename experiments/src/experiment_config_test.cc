@@ -120,8 +120,11 @@ TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {
   EXPECT_DOUBLE_EQ(e.mapper.grid_options.cell_scale_mm, 85.0);
   EXPECT_EQ(e.mapper.grid, mapper::GridKind::kHimm);
   EXPECT_TRUE(e.figures);
+  EXPECT_FALSE(e.nav_trace);  // off unless asked for
   EXPECT_EQ(e.seed, 42u);
   EXPECT_NE(e.resolved_yaml.find("cell_scale_mm: 85"), std::string::npos);
+  EXPECT_TRUE(load_experiment(p, {"output.nav_trace=true"}).nav_trace);
+  EXPECT_NE(error_of(p, {"output.nav_trace=sometimes"}), "no error");
 }
 
 TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/experiments/segment_index.h"
 
 namespace cogmap::experiments {
@@ -188,6 +189,29 @@ TEST(MemoryMetrics, SumsPeakAndRatio) {
   EXPECT_EQ(m.extracted_vertex_count, 120u);
   EXPECT_EQ(m.extracted_vertex_bytes, 960u);
   EXPECT_DOUBLE_EQ(*m.compression_ratio, 0.015);
+}
+
+}  // namespace
+}  // namespace cogmap::experiments
+
+namespace cogmap::experiments {
+namespace {
+
+TEST(NavTurning, SumsAbsoluteTurnsPerModeAcrossTheWrap) {
+  NavMetrics nav;
+  const double deg = std::numbers::pi / 180.0;
+  add_mode_interval(nav, "drive", 10.0 * deg, 0.1);
+  add_mode_interval(nav, "drive", -4.0 * deg, 0.1);
+  // +179° to -179° is a 2° turn, not 358°.
+  add_mode_interval(nav, "door_cross", -358.0 * deg, 0.1);
+  add_mode_interval(nav, "look", 0.0, 0.5);
+  EXPECT_NEAR(nav.turn_deg, 16.0, 1e-9);
+  EXPECT_NEAR(nav.turn_deg_by_mode.at("drive"), 14.0, 1e-9);
+  EXPECT_NEAR(nav.turn_deg_by_mode.at("door_cross"), 2.0, 1e-9);
+  EXPECT_DOUBLE_EQ(nav.turn_deg_by_mode.at("look"), 0.0);
+  EXPECT_NEAR(nav.time_s_by_mode.at("drive"), 0.2, 1e-12);
+  EXPECT_NEAR(nav.time_s_by_mode.at("look"), 0.5, 1e-12);
+  EXPECT_EQ(nav.time_s_by_mode.count("turn"), 0u);
 }
 
 }  // namespace

@@ -59,18 +59,30 @@ void add_contacts(NavMetrics& nav, std::span<const TrajectoryRow> rows,
                   std::span<const mapper::Segment> surfaces, const mapper::RobotGeometry& robot) {
   std::size_t episodes = 0;
   double time_s = 0.0;
+  nav.contact_start_s.clear();
   bool touching = false;
   std::optional<double> last_t;
   for (const TrajectoryRow& r : rows) {
     if (!r.truth) continue;
     const bool now = footprint_clearance_m(*r.truth, surfaces, robot) <= kContactDistanceM;
-    if (now && !touching) ++episodes;
+    if (now && !touching) {
+      ++episodes;
+      nav.contact_start_s.push_back(r.t_s);
+    }
     if (now && last_t) time_s += r.t_s - *last_t;
     touching = now;
     last_t = r.t_s;
   }
   nav.contacts = episodes;
   nav.contact_s = time_s;
+}
+
+void add_mode_interval(NavMetrics& nav, const std::string& mode, double dtheta_rad, double dt_s) {
+  const double wrapped = std::remainder(dtheta_rad, 2.0 * M_PI);
+  const double deg = std::abs(wrapped) * 180.0 / M_PI;
+  nav.turn_deg += deg;
+  nav.turn_deg_by_mode[mode] += deg;
+  nav.time_s_by_mode[mode] += dt_s;
 }
 
 double odometry_distance_m(std::span<const TrajectoryRow> rows) {

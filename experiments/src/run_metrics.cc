@@ -37,12 +37,19 @@ Json nav_json(const NavMetrics& n) {
   nav["door_passages"] = n.door_passages;
   nav["contacts"] = opt_any(n.contacts);
   nav["contact_s"] = opt(n.contact_s);
+  nav["contact_start_s"] = n.contacts ? Json(n.contact_start_s) : Json(nullptr);
   nav["distance_m"] = n.distance_m;
   nav["stalled_s"] = n.stalled_s;
   nav["rooms_visited"] = opt_any(n.rooms_visited);
   nav["rooms_total_true"] = opt_any(n.rooms_total_true);
   nav["rooms_visited_true"] = opt_any(n.rooms_visited_true);
   nav["exploration_complete"] = opt_any(n.exploration_complete);
+  nav["turn_deg"] = n.turn_deg;
+  Json turn = Json::object(), time = Json::object();
+  for (const auto& [mode, deg] : n.turn_deg_by_mode) turn[mode] = deg;
+  for (const auto& [mode, s] : n.time_s_by_mode) time[mode] = s;
+  nav["turn_deg_by_mode"] = std::move(turn);
+  nav["time_s_by_mode"] = std::move(time);
   return nav;
 }
 

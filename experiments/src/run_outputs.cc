@@ -19,16 +19,30 @@ std::string svg_num(double v) {
   return format_double(r == 0.0 ? 0.0 : r);
 }
 
+/// `header`, then `append_row(out, row)` for each row, handed to `emit` every `rows_per_chunk`
+/// rows (and at the end).
+template <typename Row, typename AppendRow>
+void csv_chunks(std::string header, std::span<const Row> rows, const AppendRow& append_row,
+                const std::function<void(std::string_view)>& emit, std::size_t rows_per_chunk) {
+  std::string out = std::move(header);
+  std::size_t in_chunk = 0;
+  for (const Row& r : rows) {
+    append_row(out, r);
+    if (++in_chunk >= std::max<std::size_t>(rows_per_chunk, 1)) {
+      emit(out);
+      out.clear();
+      in_chunk = 0;
+    }
+  }
+  if (!out.empty()) emit(out);
+}
+
 }  // namespace
 
 void trajectory_csv_chunks(std::span<const TrajectoryRow> rows,
                            const std::function<void(std::string_view)>& emit,
                            std::size_t rows_per_chunk) {
-  std::string out =
-      "t_s,true_x_m,true_y_m,true_theta_rad,odom_x_m,odom_y_m,odom_theta_rad,est_x_m,est_y_m,"
-      "est_theta_rad\n";
-  std::size_t in_chunk = 0;
-  for (const TrajectoryRow& r : rows) {
+  const auto append = [](std::string& out, const TrajectoryRow& r) {
     out += f(r.t_s);
     if (r.truth) {
       out += "," + f(r.truth->x_m) + "," + f(r.truth->y_m) + "," + f(r.truth->theta_rad);
@@ -38,13 +52,34 @@ void trajectory_csv_chunks(std::span<const TrajectoryRow> rows,
     out += "," + f(r.odometry.x_m) + "," + f(r.odometry.y_m) + "," + f(r.odometry.theta_rad);
     out += "," + f(r.estimate.x_m) + "," + f(r.estimate.y_m) + "," + f(r.estimate.theta_rad);
     out += '\n';
-    if (++in_chunk >= std::max<std::size_t>(rows_per_chunk, 1)) {
-      emit(out);
-      out.clear();
-      in_chunk = 0;
+  };
+  csv_chunks(
+      "t_s,true_x_m,true_y_m,true_theta_rad,odom_x_m,odom_y_m,odom_theta_rad,est_x_m,est_y_m,"
+      "est_theta_rad\n",
+      rows, append, emit, rows_per_chunk);
+}
+
+void nav_trace_csv_chunks(std::span<const NavTraceRow> rows,
+                          const std::function<void(std::string_view)>& emit,
+                          std::size_t rows_per_chunk) {
+  const auto append = [](std::string& out, const NavTraceRow& r) {
+    out += f(r.t_s) + "," + r.mode + "," + std::to_string(r.waypoint_index) + "," +
+           f(r.target_rad) + ",";
+    if (r.has_direction) out += f(r.direction_rad);
+    out += r.has_direction ? ",1," : ",0,";
+    if (std::isfinite(r.front_clearance_m)) out += f(r.front_clearance_m);
+    if (r.door_active) {
+      out += ",1," + f(r.door_center_m.x()) + "," + f(r.door_center_m.y()) + "," +
+             f(r.door_normal_rad) + "," + f(r.door_width_m);
+    } else {
+      out += ",0,,,,";
     }
-  }
-  if (!out.empty()) emit(out);
+    out += "," + f(r.v_mps) + "," + f(r.w_radps) + '\n';
+  };
+  csv_chunks(
+      "t_s,mode,waypoint_index,target_rad,direction_rad,has_direction,front_clearance_m,"
+      "door_active,door_x_m,door_y_m,door_normal_rad,door_width_m,v_mps,w_radps\n",
+      rows, append, emit, rows_per_chunk);
 }
 
 std::string trajectory_csv(std::span<const TrajectoryRow> rows) {

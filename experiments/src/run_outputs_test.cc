@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,27 @@ TEST(RunOutputs, TrajectoryCsvInChunksIsTheSameText) {
   EXPECT_EQ(pieces[2], "0.5,,,,4,0,0,4,0.5,0\n");
   EXPECT_EQ(pieces[0] + pieces[1] + pieces[2], trajectory_csv(rows));
   EXPECT_EQ(std::count(pieces[1].begin(), pieces[1].end(), '\n'), 2);
+}
+
+TEST(RunOutputs, NavTraceCsvColumnsEmptyFieldsAndChunks) {
+  std::vector<NavTraceRow> rows(3);
+  rows[0] = {0.1, "drive", 0,   0.5, 0.25, true, 1.5, false, mapper::Point2(0.0, 0.0),
+             0.0, 0.0,     0.4, 0.1};
+  rows[1] = {0.2,  "door_cross", 3,   -1.0, -1.0, true, std::numeric_limits<double>::infinity(),
+             true, {2.5, -1.0},  1.5, 0.75, 0.3,  0.0};
+  rows[2] = {0.3, "blocked", 3,   2.0, 0.0, false, 0.2, false, mapper::Point2(0.0, 0.0),
+             0.0, 0.0,       0.0, -1.0};
+  std::vector<std::string> pieces;
+  nav_trace_csv_chunks(
+      rows, [&](std::string_view p) { pieces.emplace_back(p); }, 2);
+  ASSERT_EQ(pieces.size(), 2u);
+  EXPECT_EQ(pieces[0] + pieces[1],
+            "t_s,mode,waypoint_index,target_rad,direction_rad,has_direction,front_clearance_m,"
+            "door_active,door_x_m,door_y_m,door_normal_rad,door_width_m,v_mps,w_radps\n"
+            "0.1,drive,0,0.5,0.25,1,1.5,0,,,,,0.4,0.1\n"
+            "0.2,door_cross,3,-1,-1,1,,1,2.5,-1,1.5,0.75,0.3,0\n"
+            "0.3,blocked,3,2,,0,0.2,0,,,,,0,-1\n");
+  EXPECT_EQ(pieces[1], "0.3,blocked,3,2,,0,0.2,0,,,,,0,-1\n");
 }
 
 TEST(RunOutputs, SegmentsCsv) {

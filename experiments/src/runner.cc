@@ -93,6 +93,7 @@ mapper::SensorFrame without_truth(const mapper::SensorFrame& frame) {
 /// The frame loop and its products, kept apart from the writing of files.
 struct SessionResult {
   std::vector<TrajectoryRow> rows;
+  std::vector<NavTraceRow> nav_rows;  // output.nav_trace only
   std::optional<bool> route_completed;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
@@ -225,6 +226,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   }
   SessionResult session;
   double stalled_s = 0.0;  // time with a stall flag set (nav block)
+  NavMetrics turning;      // odometry turning by commanding mode (nav block)
+  std::string mode = mapper::nav::to_string(mapper::nav::NavMode::kIdle);
+  std::optional<mapper::Pose2> last_odometry;
   const auto wall_start = Clock::now();
   try {
     double next_progress_s = 0.0;
@@ -235,9 +239,14 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       const mapper::SensorFrame seen = without_truth(*frame);
       mapper.process(seen);
       stalled_s += (seen.stall_left || seen.stall_right) ? seen.time_s - last_time_s : 0.0;
+      const mapper::Pose2 odometry = mapper.odometry_pose();
+      if (last_odometry) {
+        add_mode_interval(turning, mode, odometry.theta_rad - last_odometry->theta_rad,
+                          seen.time_s - last_time_s);
+      }
+      last_odometry = odometry;
       last_time_s = seen.time_s;
-      session.rows.push_back(
-          {frame->time_s, frame->true_pose, mapper.odometry_pose(), mapper.pose_estimate()});
+      session.rows.push_back({frame->time_s, frame->true_pose, odometry, mapper.pose_estimate()});
       session.sim_time_s = frame->time_s;
       if (options.on_progress && frame->time_s >= next_progress_s) {
         options.on_progress(frame->time_s, experiment.duration_s);
@@ -245,8 +254,17 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       }
       if (frame->time_s >= experiment.duration_s) break;
       if (controller->done()) break;  // a finished route, or an exploration with no exit left
-      robot.command(controller->step(
-          nav_input(experiment.controller, seen, frame->true_pose, mapper, geometry)));
+      const mapper::VelocityCommand cmd = controller->step(
+          nav_input(experiment.controller, seen, frame->true_pose, mapper, geometry));
+      robot.command(cmd);
+      const mapper::nav::NavTrace& t = controller->trace();
+      mode = mapper::nav::to_string(t.mode);
+      if (experiment.nav_trace) {
+        session.nav_rows.push_back({seen.time_s, mapper::nav::to_string(t.mode), t.waypoint_index,
+                                    t.target_rad, t.direction_rad, t.has_direction,
+                                    t.front_clearance_m, t.door_active, t.door_center_m,
+                                    t.door_normal_rad, t.door_width_m, cmd.v_mps, cmd.w_radps});
+      }
     }
     robot.stop();
     closing_run = true;
@@ -283,6 +301,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.frames = session.rows.size();
   m.route_completed = session.route_completed;
   m.nav = nav_metrics(*controller, experiment.controller, session, stalled_s);
+  m.nav.turn_deg = turning.turn_deg;
+  m.nav.turn_deg_by_mode = std::move(turning.turn_deg_by_mode);
+  m.nav.time_s_by_mode = std::move(turning.time_s_by_mode);
   m.sim_time_s = session.sim_time_s;
   m.wall_time_s = session.wall_time_s;
   const mapper::MapperStats& stats = mapper.stats();
@@ -345,6 +366,12 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
         out / "trajectory.csv",
         [&](const mapper::io::ChunkSink& emit) { trajectory_csv_chunks(session.rows, emit); },
         durability);
+    if (experiment.nav_trace) {
+      mapper::io::write_file_atomic_chunks(
+          out / "nav_trace.csv",
+          [&](const mapper::io::ChunkSink& emit) { nav_trace_csv_chunks(session.nav_rows, emit); },
+          durability);
+    }
     mapper::io::write_file_atomic(out / "map_segments.csv", segments_csv(corrected), durability);
     mapper::io::write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry),
                                   durability);

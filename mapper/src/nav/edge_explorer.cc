@@ -18,11 +18,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-CoreOptions core_options(const ExploreOptions& o) {
-  return {o.speed_mps, o.max_turn_rate_radps, o.stuck_time_s, o.vfh, o.memory, o.safety,
-          o.recovery};
-}
-
 /// The sides as the side transducers see them now (robot frame, from the centre line), and
 /// the body's lane ahead from the obstacle field. The field's echoes linger for seconds and
 /// the grid's smear fills a doorway, so the sides are read from each transducer's last pulse.
@@ -103,7 +98,7 @@ class EdgeExplorer final : public Controller {
  public:
   explicit EdgeExplorer(const ExploreOptions& options)
       : options_(options),
-        core_(core_options(options)),
+        core_(core_options_of(options)),
         door_(options.door),
         budget_(options.time_budget_s, options.distance_budget_m) {}
 

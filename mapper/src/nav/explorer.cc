@@ -17,16 +17,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-CoreOptions core_options(const ExploreOptions& o) {
-  return {o.speed_mps, o.max_turn_rate_radps, o.stuck_time_s, o.vfh, o.memory, o.safety,
-          o.recovery};
-}
-
 class Explorer final : public Controller {
  public:
   explicit Explorer(const ExploreOptions& options)
       : options_(options),
-        core_(core_options(options)),
+        core_(core_options_of(options)),
         budget_(options.time_budget_s, options.distance_budget_m) {}
 
   VelocityCommand step(const NavInput& input) override {

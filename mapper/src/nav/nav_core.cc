@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "nav/spin_guard.h"
 #include "nav/steering.h"
 
 namespace cogmap::mapper::nav {
@@ -28,6 +29,7 @@ bool NavCore::sense(const NavInput& input, double goal_range_m) {
   // Never command more than the robot can do.
   speed_mps_ = std::clamp(options_.speed_mps, 0.0, robot_.max_speed_mps);
   max_turn_radps_ = std::clamp(options_.max_turn_rate_radps, 0.0, robot_.max_turn_rate_radps);
+  heading_rad_ = input.pose.theta_rad;
   memory_.add_frame(*input.frame, input.pose, robot_);
   field_.build(input.pose.translation(), input.grid, memory_);
   goal_range_m_ = goal_range_m;
@@ -95,23 +97,54 @@ VelocityCommand NavCore::drive_toward(const NavInput& input, double target_rad) 
 }
 
 VelocityCommand NavCore::drive_direct(const NavInput& input, double target_rad, double speed_mps,
-                                      NavMode mode) {
+                                      NavMode mode, const DoorBand* door_band) {
   trace_.target_rad = wrap_angle_rad(target_rad);
   trace_.direction_rad = trace_.target_rad;
   trace_.has_direction = true;
   trace_.mode = mode;
+  const double speed = std::min(speed_mps, speed_mps_);
+  const double error = target_rad - input.pose.theta_rad;
+  if (mode != NavMode::kDoorCross) {
+    return sent(steer(error, trace_.front_clearance_m, speed, max_turn_radps_, options_.safety));
+  }
   // The lane the body sweeps, with the VFH margin beyond its half-width: in a doorway the
   // jambs sit inside the ±30° cone but beside the lane.
   const double half_lane =
       0.5 * robot_.width_m + (options_.vfh.safety_radius_m - 0.5 * robot_.width_m) * 0.5;
-  const double lane =
-      lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane, robot_.length_m);
-  return sent(steer(target_rad - input.pose.theta_rad,
-                    mode == NavMode::kDoorCross ? lane : trace_.front_clearance_m,
-                    std::min(speed_mps, speed_mps_), max_turn_radps_, options_.safety));
+  const double lane = lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane,
+                                       robot_.length_m, door_band);
+  const VelocityCommand outside = steer(error, lane, speed, max_turn_radps_, options_.safety);
+  if (door_band == nullptr) return sent(outside);
+  // What lies in the door's band is the jambs (and their smear): the body passes between
+  // them, so it may close in on them to the crossing's own, shorter, stop distance.
+  const double in_band =
+      lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane, robot_.length_m, nullptr);
+  SafetyOptions safety = options_.safety;
+  safety.stop_clearance_m = options_.cross_stop_clearance_m;
+  safety.slow_clearance_m = options_.cross_slow_clearance_m;
+  const VelocityCommand inside = steer(error, in_band, speed, max_turn_radps_, safety);
+  return sent(std::abs(inside.v_mps) < std::abs(outside.v_mps) ? inside : outside);
 }
 
-VelocityCommand NavCore::sent(const VelocityCommand& cmd) {
+VelocityCommand NavCore::spin_guarded(const VelocityCommand& cmd) const {
+  const SafetyOptions& s = options_.safety;
+  if (s.spin_guard_deg <= 0.0 || std::abs(cmd.v_mps) > s.spin_max_speed_mps ||
+      std::abs(cmd.w_radps) <= kMotionEpsilon) {
+    return cmd;
+  }
+  const auto strike = spin_strike(field_.points(), heading_rad_, cmd.w_radps > 0.0 ? 1 : -1, robot_,
+                                  s.spin_guard_margin_m, deg_to_rad(s.spin_guard_deg));
+  if (!strike) return cmd;
+  // Away from the point along the axis: back from one ahead of the centre, on from one behind.
+  const double away_rad = strike->x() >= 0.0 ? heading_rad_ + std::numbers::pi : heading_rad_;
+  const double half_lane = 0.5 * robot_.width_m + s.spin_guard_margin_m;
+  const double free_m = lane_clearance_m(field_.points(), away_rad, half_lane, robot_.length_m);
+  if (free_m <= s.spin_guard_margin_m) return cmd;  // boxed in: the turn is all there is
+  return {strike->x() >= 0.0 ? -s.spin_escape_mps : s.spin_escape_mps, 0.0};
+}
+
+VelocityCommand NavCore::sent(const VelocityCommand& requested) {
+  const VelocityCommand cmd = spin_guarded(requested);
   moving_ = std::abs(cmd.v_mps) > kMotionEpsilon || std::abs(cmd.w_radps) > kMotionEpsilon;
   if (std::abs(cmd.v_mps) > kMotionEpsilon) last_forward_ = cmd.v_mps > 0.0;
   return cmd;

@@ -11,6 +11,7 @@
 #include "nav/obstacle_field.h"
 #include "nav/obstacle_memory.h"
 #include "nav/recovery.h"
+#include "nav/steering.h"
 
 namespace cogmap::mapper::nav {
 
@@ -23,7 +24,23 @@ struct CoreOptions {
   MemoryOptions memory;
   SafetyOptions safety;
   RecoveryOptions recovery;
+  double cross_stop_clearance_m = 0.25;  ///< DoorOptions: the crossing's front check on the
+  double cross_slow_clearance_m = 0.6;   ///< points in the door's band
 };
+
+/// The shared options of a behaviour's options (RouteOptions, ExploreOptions: same names).
+template <typename BehaviourOptions>
+CoreOptions core_options_of(const BehaviourOptions& o) {
+  return {o.speed_mps,
+          o.max_turn_rate_radps,
+          o.stuck_time_s,
+          o.vfh,
+          o.memory,
+          o.safety,
+          o.recovery,
+          o.door.cross_stop_clearance_m,
+          o.door.cross_slow_clearance_m};
+}
 
 class NavCore {
  public:
@@ -45,12 +62,18 @@ class NavCore {
   VelocityCommand drive_toward(const NavInput& input, double target_rad);
 
   /// Steers straight at the world direction `target_rad` at up to `speed_mps`, without VFH
-  /// (the door behaviour's crossing), keeping the front safety check.
+  /// (the door behaviour's crossing), keeping the front safety check. For kDoorCross the
+  /// check looks at the body's lane only, and the points within `door_band` (if given) stop
+  /// the robot only at the crossing's shorter distances (DoorOptions::cross_stop_clearance_m).
   VelocityCommand drive_direct(const NavInput& input, double target_rad, double speed_mps,
-                               NavMode mode);
+                               NavMode mode, const DoorBand* door_band = nullptr);
 
   /// Records the command about to be sent (stuck detection needs it) and returns it.
   VelocityCommand sent(const VelocityCommand& cmd);
+
+  /// A turn on the spot that would strike a sensed point (spin_strike) becomes a move away
+  /// from it along the axis, when that lane is clear; any other command is returned as is.
+  VelocityCommand spin_guarded(const VelocityCommand& cmd) const;
 
   /// A zero command in mode `mode` (also clears the motion flag).
   VelocityCommand stop(NavMode mode);
@@ -73,6 +96,7 @@ class NavCore {
   double speed_mps_ = 0.0;
   double max_turn_radps_ = 0.0;
   double goal_range_m_ = 0.0;  // obstacles beyond the goal do not block
+  double heading_rad_ = 0.0;   // the estimate's heading at the last sense()
   bool moving_ = false;        // the last command moved the robot
   bool last_forward_ = true;   // the last translation was forward
   NavTrace trace_;

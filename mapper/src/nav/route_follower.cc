@@ -16,23 +16,19 @@
 namespace cogmap::mapper::nav {
 namespace {
 
-CoreOptions core_options(const RouteOptions& o) {
-  return {o.speed_mps, o.max_turn_rate_radps, o.stuck_time_s, o.vfh, o.memory, o.safety,
-          o.recovery};
-}
-
 class RouteFollower final : public ReroutableFollower {
  public:
   RouteFollower(const RouteOptions& options, std::vector<Point2> waypoints)
       : options_(options),
         waypoints_(std::move(waypoints)),
-        core_(core_options(options)),
+        core_(core_options_of(options)),
         door_(options.door) {}
 
   VelocityCommand step(const NavInput& input) override {
     if (input.frame == nullptr) return core_.stop(NavMode::kIdle);
     const double now = input.frame->time_s;
     const Point2 here = input.pose.translation();
+    core_.trace().door_active = false;  // set again below while the door behaviour holds one
     advance(here, now);
     if (done()) return core_.stop(NavMode::kDone);
     // What lies beyond the waypoint (plus the robot's clearance) need not block the way there:
@@ -111,11 +107,18 @@ class RouteFollower final : public ReroutableFollower {
     }
     const auto aim = door_.step(points, input.pose, goal, now);
     core_.trace().door_passages = door_.crossed();
+    NavTrace& t = core_.trace();
+    t.door_active = aim.has_value();
+    t.door_center_m = door_.opening().center_m;
+    t.door_normal_rad = std::atan2(door_.opening().normal.y(), door_.opening().normal.x());
+    t.door_width_m = door_.opening().width_m;
     if (!aim) return std::nullopt;
     const Point2 d = *aim - here;
     const double rad = std::atan2(d.y(), d.x());
     if (door_.mode() == NavMode::kDoorCross) {
-      return core_.drive_direct(input, rad, options_.door.speed_mps, NavMode::kDoorCross);
+      const DoorBand band{door_.opening().center_m - here, door_.opening().normal,
+                          options_.door.recenter_band_m};
+      return core_.drive_direct(input, rad, options_.door.speed_mps, NavMode::kDoorCross, &band);
     }
     // The approach point lies in the open space in front of the opening: steer straight at
     // it (VFH's valley choice swings the heading about near a wall and loses the door).

@@ -24,10 +24,14 @@ double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_r
 }
 
 double lane_clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
-                        double half_width_m, double length_m) {
+                        double half_width_m, double length_m, const DoorBand* skip) {
   const double c = std::cos(heading_rad), s = std::sin(heading_rad);
   double nearest = std::numeric_limits<double>::infinity();
   for (const ObstaclePoint& o : obstacles) {
+    if (skip &&
+        std::abs((o.offset_m - skip->center_offset_m).dot(skip->normal)) <= skip->half_depth_m) {
+      continue;
+    }
     const double ahead = c * o.offset_m.x() + s * o.offset_m.y();
     const double lateral = -s * o.offset_m.x() + c * o.offset_m.y();
     if (ahead <= 0.0 || std::abs(lateral) > half_width_m) continue;

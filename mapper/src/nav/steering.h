@@ -19,8 +19,17 @@ double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_r
 /// driving straight along `heading_rad` (|lateral| ≤ half_width_m), metres; +infinity when
 /// the lane is clear. Used in doorways, where the jambs sit inside the ±30° cone but beside
 /// the lane.
+/// A band about a door line (points whose distance from the line through `center_offset_m`
+/// with unit normal `normal` is at most `half_depth_m`; offsets from the robot, like the
+/// obstacles') that the lane check skips while crossing: the opening was sensed there, so
+/// what lies in it is the sonar's smear of the jambs, not something in the way.
+struct DoorBand {
+  Point2 center_offset_m{0.0, 0.0};
+  Point2 normal{1.0, 0.0};
+  double half_depth_m = 0.0;
+};
 double lane_clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
-                        double half_width_m, double length_m);
+                        double half_width_m, double length_m, const DoorBand* skip = nullptr);
 
 /// w = k·error clipped to `max_turn_radps`; errors beyond turn_in_place_deg turn on the spot;
 /// otherwise v = speed·(1 - |error|/turn_in_place)·proximity, where proximity falls linearly

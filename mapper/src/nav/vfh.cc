@@ -92,6 +92,15 @@ void Vfh::build(const std::vector<ObstaclePoint>& obstacles, double range_m) {
   }
 }
 
+double Vfh::side_switch_cost(double direction, double target_rad,
+                             std::optional<double> previous_rad) const {
+  if (options_.side_switch_rad <= 0.0 || !previous_rad) return 0.0;
+  const double prev_off = wrap_angle_rad(*previous_rad - target_rad);
+  const double off = wrap_angle_rad(direction - target_rad);
+  if (std::abs(prev_off) < options_.detour_rad || std::abs(off) < options_.detour_rad) return 0.0;
+  return (prev_off > 0.0) != (off > 0.0) ? options_.side_switch_rad : 0.0;
+}
+
 VfhChoice Vfh::select(double target_rad, double heading_rad,
                       std::optional<double> previous_rad) const {
   const int n = sector_count();
@@ -109,7 +118,8 @@ VfhChoice Vfh::select(double target_rad, double heading_rad,
         options_.heading_weight * std::abs(wrap_angle_rad(direction - heading_rad)) +
         (previous_rad
              ? options_.previous_weight * std::abs(wrap_angle_rad(direction - *previous_rad))
-             : 0.0);
+             : 0.0) +
+        side_switch_cost(direction, target_rad, previous_rad);
     if (!best.found || cost < best_cost) {
       best_cost = cost;
       best = {true, wrap_angle_rad(direction), width};

@@ -155,3 +155,45 @@ TEST(Vfh, FreestSectorPrefersTheGivenDirectionAmongEquals) {
 
 }  // namespace
 }  // namespace cogmap::mapper::nav
+
+namespace cogmap::mapper::nav {
+namespace {
+
+// A wall 0.8 m ahead across the whole view, the target straight through it: the valleys lie
+// left and right of the wall, and the choice goes round it on one side.
+std::vector<ObstaclePoint> long_wall_ahead() {
+  std::vector<ObstaclePoint> pts;
+  for (int i = -30; i <= 30; ++i) pts.push_back({Point2(0.8, 0.1 * i), 15.0f});
+  return pts;
+}
+
+TEST(VfhDetourSide, KeepsItsSideUntilTheOtherIsMuchCheaper) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  Vfh vfh{VfhOptions{}};
+  vfh.build(long_wall_ahead());
+  const double target = 5.0 * kDeg;  // slightly left: without memory the left side wins
+  const VfhChoice fresh = vfh.select(target, target);
+  ASSERT_TRUE(fresh.found);
+  EXPECT_GT(fresh.direction_rad, 0.5);
+  // Last cycle went round on the right: 10° of asymmetry is not worth a 180° turn.
+  const VfhChoice right = vfh.select(target, target, -1.6);
+  ASSERT_TRUE(right.found);
+  EXPECT_LT(right.direction_rad, -0.5);
+  // 40° left: the left side is now 80° (1.4 rad) cheaper, more than the 1 rad switch.
+  const VfhChoice far_left = vfh.select(40.0 * kDeg, 40.0 * kDeg, -1.6);
+  ASSERT_TRUE(far_left.found);
+  EXPECT_GT(far_left.direction_rad, 0.5);
+  // The option off: the memoryless choice of the thesis.
+  VfhOptions off;
+  off.side_switch_rad = 0.0;
+  Vfh plain{off};
+  plain.build(long_wall_ahead());
+  EXPECT_GT(plain.select(target, target, -1.6).direction_rad, 0.5);
+  // Not a detour (the previous choice was near the target): no side to keep.
+  EXPECT_DOUBLE_EQ(vfh.side_switch_cost(-1.6, target, 0.1), 0.0);
+  EXPECT_DOUBLE_EQ(vfh.side_switch_cost(-1.6, target, 1.6), VfhOptions{}.side_switch_rad);
+  EXPECT_DOUBLE_EQ(vfh.side_switch_cost(-1.6, target, -1.2), 0.0);
+}
+
+}  // namespace
+}  // namespace cogmap::mapper::nav

@@ -4,8 +4,10 @@
 /// the controller's own account); contacts need the true pose and the true surfaces.
 
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "cogmap/experiments/metrics.h"
@@ -23,6 +25,7 @@ struct NavMetrics {
   std::size_t door_passages = 0;             ///< doorways passed by the door behaviour
   std::optional<std::size_t> contacts;       ///< touches of a wall or obstacle (needs truth)
   std::optional<double> contact_s;           ///< frames in contact × frame time (needs truth)
+  std::vector<double> contact_start_s;       ///< when each contact episode began (needs truth)
   double distance_m = 0.0;                   ///< odometry path length (the robot's own count)
   double stalled_s = 0.0;                    ///< time with either stall flag set
   std::optional<std::size_t> rooms_visited;  ///< explore: rooms the explorer entered
@@ -31,7 +34,18 @@ struct NavMetrics {
   /// explore: true rooms the true trajectory entered (needs truth)
   std::optional<std::size_t> rooms_visited_true;
   std::optional<bool> exploration_complete;  ///< explore: stopped with no unexplored exit left
+  /// Odometry heading change summed over frames, degrees: every turn costs heading on a
+  /// skid-steer base (docs/odometry-model.md), so this says what the drift had to work with.
+  double turn_deg = 0.0;
+  /// The same turning and the time, split by the controller mode that commanded it
+  /// (`to_string(NavMode)`); modes never entered are absent.
+  std::map<std::string, double> turn_deg_by_mode;
+  std::map<std::string, double> time_s_by_mode;
 };
+
+/// Adds one frame interval to the turning tallies: `dtheta_rad` is the odometry heading change
+/// over the interval (wrapped to [-π, π)), `dt_s` its length, `mode` the mode commanding it.
+void add_mode_interval(NavMetrics& nav, const std::string& mode, double dtheta_rad, double dt_s);
 
 /// A frame counts as a contact when the true footprint (a length_m × width_m rectangle about
 /// the centre) is within this of a true surface: Box2D keeps polygons 0.01 m apart (its

@@ -23,6 +23,31 @@ void trajectory_csv_chunks(std::span<const TrajectoryRow> rows,
                            const std::function<void(std::string_view)>& emit,
                            std::size_t rows_per_chunk = 1024);
 
+/// One control cycle of the controller's own account (nav_trace.csv, `output.nav_trace`).
+struct NavTraceRow {
+  double t_s = 0.0;
+  const char* mode = "idle";  ///< to_string(NavMode): a static string
+  std::size_t waypoint_index = 0;
+  double target_rad = 0.0;
+  double direction_rad = 0.0;
+  bool has_direction = false;
+  double front_clearance_m = 0.0;
+  bool door_active = false;
+  mapper::Point2 door_center_m{0.0, 0.0};
+  double door_normal_rad = 0.0;
+  double door_width_m = 0.0;
+  double v_mps = 0.0;  ///< the command sent
+  double w_radps = 0.0;
+};
+
+/// nav_trace.csv: `t_s,mode,waypoint_index,target_rad,direction_rad,has_direction,
+/// front_clearance_m,door_active,door_x_m,door_y_m,door_normal_rad,door_width_m,v_mps,w_radps`,
+/// one row a cycle; door columns empty while no door is held, direction empty without one,
+/// clearance empty when nothing is ahead. In pieces of `rows_per_chunk` rows, like the trajectory.
+void nav_trace_csv_chunks(std::span<const NavTraceRow> rows,
+                          const std::function<void(std::string_view)>& emit,
+                          std::size_t rows_per_chunk = 1024);
+
 /// map_segments.csv / map_segments_odom.csv: `asr_id,x1_m,y1_m,x2_m,y2_m`, world frame.
 std::string segments_csv(std::span<const mapper::Mapper::MapSegment> segments);
 

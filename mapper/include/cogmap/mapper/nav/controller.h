@@ -59,6 +59,10 @@ struct NavTrace {
   std::size_t skipped_waypoints = 0;  ///< route follower: waypoints given up after recoveries
   std::size_t recoveries = 0;         ///< stuck recoveries started so far
   std::size_t door_passages = 0;      ///< doorways crossed under the door behaviour
+  bool door_active = false;           ///< the door behaviour holds an opening (align/cross)
+  Point2 door_center_m{0.0, 0.0};     ///< ...its centre, estimate frame (valid when active)
+  double door_normal_rad = 0.0;       ///< ...the direction through it
+  double door_width_m = 0.0;          ///< ...and its sensed width
   std::size_t rooms_visited = 0;      ///< explorer: rooms entered (the start room counts)
   bool exploration_complete = false;  ///< explorer: stopped with no reachable frontier left
   std::vector<double> density;        ///< enlarged polar density per sector (Eq. 2.17)
@@ -101,6 +105,13 @@ struct VfhOptions {
                                   ///< the door (docs/algorithms.md, "Door passage")
   double heading_weight = 0.2;    ///< cost of turning relative to missing the target (VFH+
                                   ///< μ2/μ1, smaller so the target dominates)
+  /// Detour side: when last cycle's choice went round an obstacle on one side of the target
+  /// (more than detour_rad off it), a candidate on the other side costs this much more. A
+  /// waypoint close behind a wall swings its bearing as the robot moves along the wall, and
+  /// the cheaper side flipped every few seconds, each flip a ~180° turn on the spot (nine_rooms
+  /// seed 5: 37 s of it, 30° of heading drift). 1 rad: a switch is worth ~57° of target error.
+  double side_switch_rad = 1.0;
+  double detour_rad = 0.5;        ///< ...a choice this far (29°) off the target is a detour
   double grid_min_range_m = 1.5;  ///< room-grid cells nearer than this are ignored; the recent
                                   ///< sonar (MemoryOptions) alone decides there, because the
                                   ///< grid's 30° angular smear closes 1 m doorways (docs);
@@ -134,6 +145,16 @@ struct SafetyOptions {
   double front_half_angle_deg = 30.0;  ///< the cone ahead checked for the nearest obstacle
   double slow_clearance_m = 1.0;       ///< from the bumper: below it speed falls linearly
   double stop_clearance_m = 0.35;      ///< from the bumper: below it forward speed is zero
+  /// Turning on the spot (|v| ≤ spin_max_speed_mps) is checked over the next spin_guard_deg of
+  /// the turn: when a sensed point would come within spin_guard_margin_m of the body outline,
+  /// the robot first moves away from it along its axis at spin_escape_mps (back from a point
+  /// ahead of the centre, forward from one behind), if that lane is clear. 0° disables.
+  /// Measured in docs/algorithms.md, "Turning on the spot".
+  double spin_guard_deg = 20.0;  ///< two cycles of the 1 rad/s turn plus its ramp-down
+  double spin_guard_margin_m =
+      0.04;  ///< points are 0.1 m cell centres: a face may lie 0.05 m nearer
+  double spin_max_speed_mps = 0.05;  ///< slower than this counts as turning on the spot
+  double spin_escape_mps = 0.1;      ///< the move away, either way along the axis
 };
 
 /// Stuck detection and the back-off-and-turn recovery.
@@ -210,6 +231,15 @@ struct DoorOptions {
   /// (0.2 at 10 Hz: a time constant of ~0.5 s, longer than one sonar cycle). 0 disables.
   double recenter_gain = 0.2;
   double recenter_band_m = 0.3;
+  /// Crossing: what the lane check finds within recenter_band_m of the door line is the
+  /// jambs and the sonar's smear of them (a 0.9 m door is sensed 0.7-0.75 m wide), and with the
+  /// route's stop/slow distances (0.35/1.0 m) it held the robot to a crawl in front of an open
+  /// door until the door was called closed. Those points stop the robot only this near; what
+  /// lies beyond the band keeps the route's distances. The crossing speed (0.3 m/s) stops in
+  /// 0.075 m at the P2-AT's 0.6 m/s² plus 0.03 m in one 0.1 s cycle: 0.25 m is 2.4 times that.
+  /// Measured on generated buildings (docs/algorithms.md, "Door passage").
+  double cross_stop_clearance_m = 0.25;  ///< from the bumper, door-band points: no forward speed
+  double cross_slow_clearance_m = 0.6;   ///< ...and below this the speed falls linearly
 };
 
 /// The route follower (experiments drive a robot through a list of world points).

@@ -44,7 +44,7 @@ class Vfh {
   /// With `previous_rad` (last cycle's choice) the cost gains previous_weight·|previous - c|
   /// (VFH+'s μ3): near a wall the two valley edges cost about the same, and without it the
   /// choice flips between them every few cycles (the robot swings left and right in front of
-  /// a doorway).
+  /// a doorway). It also gains VfhOptions::side_switch_rad for leaving the side of a detour.
   VfhChoice select(double target_rad, double heading_rad,
                    std::optional<double> previous_rad = std::nullopt) const;
   /// select() with the heading equal to the target (no turning preference).
@@ -54,6 +54,10 @@ class Vfh {
   int freest_sector(double prefer_rad) const;
 
   int sector_count() const { return static_cast<int>(density_.size()); }
+  /// VfhOptions::side_switch_rad when `direction` and `previous_rad` go round the target on
+  /// opposite sides (each more than detour_rad off it), else 0.
+  double side_switch_cost(double direction, double target_rad,
+                          std::optional<double> previous_rad) const;
   /// Sector index of a world angle (any value; wrapped).
   int sector_of(double angle_rad) const;
   /// World angle of a sector's centre, (-π, π].

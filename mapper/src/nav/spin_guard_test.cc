@@ -1,0 +1,106 @@
+// Turning on the spot: which sensed point the body's corners would strike, and the guard
+// that moves the robot away from it first.
+
+#include "nav/spin_guard.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "nav/nav_core.h"
+
+namespace cogmap::mapper::nav {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// A point beside the front-left corner of the P2-AT (corner at x 0.313, y 0.2525): outside the
+// outline grown by 0.04 m (|y| > 0.2925) but within its corners' reach (0.4585 m).
+const Point2 kBesideCorner(0.30, 0.32);
+
+Point2 to_world(const Point2& body, double heading_rad) {
+  const double c = std::cos(heading_rad), s = std::sin(heading_rad);
+  return {c * body.x() - s * body.y(), s * body.x() + c * body.y()};
+}
+
+TEST(SpinStrike, ATurnTowardAPointBesideACornerStrikesIt) {
+  const RobotGeometry robot = p2at_geometry();
+  for (const double heading : {0.0, M_PI / 2, -2.5}) {
+    SCOPED_TRACE(heading);
+    const std::vector<ObstaclePoint> pts = {{to_world(kBesideCorner, heading), 15.0f}};
+    // Counter-clockwise the corner swings into it after 6° (y' = 0.32 cos a - 0.30 sin a falls
+    // below 0.2925 between 5° and 6°); clockwise it swings away.
+    const auto ccw = spin_strike(pts, heading, +1, robot, 0.04, 20.0 * kDeg);
+    ASSERT_TRUE(ccw.has_value());
+    EXPECT_NEAR(ccw->x(), kBesideCorner.x(), 1e-12);
+    EXPECT_NEAR(ccw->y(), kBesideCorner.y(), 1e-12);
+    EXPECT_FALSE(spin_strike(pts, heading, -1, robot, 0.04, 20.0 * kDeg).has_value());
+    // Looking only 5° ahead, the counter-clockwise turn is still clear.
+    EXPECT_FALSE(spin_strike(pts, heading, +1, robot, 0.04, 5.0 * kDeg).has_value());
+    EXPECT_TRUE(spin_strike(pts, heading, +1, robot, 0.04, 6.0 * kDeg).has_value());
+  }
+}
+
+TEST(SpinStrike, SkipsPointsOutOfReachOrAlreadyInsideAndPicksTheFirstStruck) {
+  const RobotGeometry robot = p2at_geometry();
+  // 0.5 m ahead is beyond every corner; 0.1 m ahead is inside the body (a contact or smear).
+  const std::vector<ObstaclePoint> far_and_inside = {{Point2(0.5, 0.0), 15.0f},
+                                                     {Point2(0.1, 0.1), 15.0f}};
+  EXPECT_FALSE(spin_strike(far_and_inside, 0.0, +1, robot, 0.04, M_PI).has_value());
+  EXPECT_FALSE(spin_strike(far_and_inside, 0.0, -1, robot, 0.04, M_PI).has_value());
+  // One 0.4 m off the left flank, struck turning counter-clockwise after 43° (cos a ≤
+  // 0.2925/0.4), and one beside the rear-right corner, struck after 6° (the mirror image of
+  // kBesideCorner): the nearest in angle wins, whatever the order.
+  const Point2 flank(0.0, 0.40), rear_right(-0.30, -0.32);
+  const std::vector<ObstaclePoint> flank_only = {{flank, 15.0f}};
+  EXPECT_FALSE(spin_strike(flank_only, 0.0, +1, robot, 0.04, 42.0 * kDeg).has_value());
+  EXPECT_TRUE(spin_strike(flank_only, 0.0, +1, robot, 0.04, 44.0 * kDeg).has_value());
+  for (const auto& two : {std::vector<ObstaclePoint>{{flank, 15.0f}, {rear_right, 15.0f}},
+                          std::vector<ObstaclePoint>{{rear_right, 15.0f}, {flank, 15.0f}}}) {
+    const auto first = spin_strike(two, 0.0, +1, robot, 0.04, 60.0 * kDeg);
+    ASSERT_TRUE(first.has_value());
+    EXPECT_NEAR(first->x(), rear_right.x(), 1e-12);
+    EXPECT_NEAR(first->y(), rear_right.y(), 1e-12);
+  }
+}
+
+/// A core that has sensed one echo of the left transducer (90°, at x 0.147, y 0.136) 0.2 m
+/// away: a point beside the left flank, near the front-left corner.
+struct LeftEcho {
+  RobotGeometry robot = p2at_geometry();
+  SensorFrame frame;
+  NavInput input;
+  NavCore core;
+
+  explicit LeftEcho(const CoreOptions& options) : core(options) {
+    frame.sonar = {{0, 0.2, true, 0.0}};
+    input.frame = &frame;
+    input.robot = &robot;
+    core.sense(input);
+  }
+};
+
+TEST(SpinGuard, BacksAwayBeforeATurnThatWouldStrikeAndTurnsTheOtherWayFreely) {
+  LeftEcho s{CoreOptions{}};
+  const double speed = s.core.speed_mps();
+  // A target 120° left: a turn on the spot counter-clockwise, toward the point.
+  const VelocityCommand left = s.core.drive_direct(s.input, 120.0 * kDeg, speed, NavMode::kDirect);
+  EXPECT_DOUBLE_EQ(left.v_mps, -CoreOptions{}.safety.spin_escape_mps);
+  EXPECT_DOUBLE_EQ(left.w_radps, 0.0);
+  // 120° right: the corner swings away from it, the turn goes ahead.
+  const VelocityCommand right =
+      s.core.drive_direct(s.input, -120.0 * kDeg, speed, NavMode::kDirect);
+  EXPECT_DOUBLE_EQ(right.v_mps, 0.0);
+  EXPECT_DOUBLE_EQ(right.w_radps, -s.core.max_turn_radps());
+  // Guard off: the turn toward the point is sent as it is.
+  CoreOptions off;
+  off.safety.spin_guard_deg = 0.0;
+  LeftEcho u{off};
+  const VelocityCommand blind = u.core.drive_direct(u.input, 120.0 * kDeg, speed, NavMode::kDirect);
+  EXPECT_DOUBLE_EQ(blind.v_mps, 0.0);
+  EXPECT_DOUBLE_EQ(blind.w_radps, u.core.max_turn_radps());
+}
+
+}  // namespace
+}  // namespace cogmap::mapper::nav
