@@ -4,6 +4,7 @@
 // to what was measured, so a regression shows.
 #include <gtest/gtest.h>
 
+#include "run_seed.h"
 #include "source_dir.h"
 
 #include <cstdint>
@@ -19,7 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using integration::read_file;
 using integration::source_dir;
 
 struct ExploreCase {
@@ -49,13 +49,7 @@ TEST_P(Explore, VisitsTheRoomsAndStopsByItself) {
   int all_rooms = 0, visited = 0, completed = 0, contacts = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    e.seed = seed;
-    RunOptions o;
-    o.out_dir = fs::path(::testing::TempDir()) / ("explore_" + c.name);
-    o.figures = false;
-    fs::remove_all(o.out_dir);
-    (void)run_experiment(e, o);
-    const nlohmann::json m = nlohmann::json::parse(read_file(o.out_dir / "metrics.json"));
+    const nlohmann::json m = integration::run_seed_metrics(e, seed, "explore_" + c.name);
     const nlohmann::json& nav = m["nav"];
     EXPECT_EQ(nav["rooms_total_true"].get<int>(), c.rooms);
     const int v = nav["rooms_visited_true"].get<int>();

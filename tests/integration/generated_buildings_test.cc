@@ -6,6 +6,7 @@
 // complete the route on the measured number of seeds and draw walls no worse than measured.
 #include <gtest/gtest.h>
 
+#include "run_seed.h"
 #include "source_dir.h"
 
 #include <cstdint>
@@ -19,9 +20,7 @@
 namespace cogmap::experiments {
 namespace {
 
-namespace fs = std::filesystem;
 
-using integration::read_file;
 using integration::source_dir;
 
 struct BuildingCase {
@@ -49,13 +48,7 @@ TEST_P(GeneratedBuilding, CompletesTheRouteByTheEstimateWithoutContact) {
   int completed = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    e.seed = seed;
-    RunOptions o;
-    o.out_dir = fs::path(::testing::TempDir()) / ("generated_" + c.name);
-    o.figures = false;
-    fs::remove_all(o.out_dir);
-    (void)run_experiment(e, o);
-    const nlohmann::json m = nlohmann::json::parse(read_file(o.out_dir / "metrics.json"));
+    const nlohmann::json m = integration::run_seed_metrics(e, seed, "generated_" + c.name);
     const nlohmann::json& nav = m["nav"];
     const bool done = nav["route_completed"].get<bool>();
     completed += done ? 1 : 0;
