@@ -30,13 +30,15 @@ function(cogmap_target_defaults target)
 endfunction()
 
 # cogmap_add_test(NAME name SOURCES ... LIBS ...): one GoogleTest executable, registered with ctest.
+# PROPERTIES ... are added to every discovered test's properties (e.g. RUN_SERIAL TRUE).
 function(cogmap_add_test)
-  cmake_parse_arguments(ARG "" "NAME" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME" "SOURCES;LIBS;PROPERTIES" ${ARGN})
   add_executable(${ARG_NAME} ${ARG_SOURCES})
   cogmap_target_defaults(${ARG_NAME})
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
   gtest_discover_tests(${ARG_NAME} DISCOVERY_TIMEOUT 60
-                       PROPERTIES ENVIRONMENT "COGMAP_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+                       PROPERTIES ENVIRONMENT "COGMAP_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+                                  ${ARG_PROPERTIES})
 endfunction()
 
 # cogmap_add_benchmark(NAME name SOURCES ... LIBS ...): a Google Benchmark executable (not a test).
