@@ -20,7 +20,6 @@
 namespace cogmap::experiments {
 namespace {
 
-
 using integration::source_dir;
 
 struct BuildingCase {

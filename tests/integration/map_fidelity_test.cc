@@ -23,7 +23,6 @@
 namespace cogmap::experiments {
 namespace {
 
-
 using integration::source_dir;
 
 struct FidelityCase {
