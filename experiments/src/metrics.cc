@@ -41,20 +41,26 @@ std::vector<SurfaceSample> sample_segments(std::span<const Segment> segments, do
   return out;
 }
 
-std::vector<Point2> subsample_path(std::span<const Point2> path, double step_m) {
-  std::vector<Point2> out;
-  if (path.empty()) return out;
-  out.push_back(path.front());
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    if ((path[i] - out.back()).norm() >= step_m) out.push_back(path[i]);
-  }
-  if ((path.back() - out.back()).norm() > 0.0) out.push_back(path.back());
+void PathSubsampler::add(const Point2& p) {
+  if (kept_.empty() || (p - kept_.back()).norm() >= step_m_) kept_.push_back(p);
+  last_ = p;
+}
+
+std::vector<Point2> PathSubsampler::path() const {
+  std::vector<Point2> out = kept_;
+  if (last_ && (*last_ - out.back()).norm() > 0.0) out.push_back(*last_);
   return out;
 }
 
-std::vector<SurfaceSample> visible_truth_samples(std::span<const Segment> truth,
-                                                 std::span<const Point2> true_path,
-                                                 const MapMetricsOptions& options) {
+std::vector<Point2> subsample_path(std::span<const Point2> path, double step_m) {
+  PathSubsampler sampler(step_m);
+  for (const Point2& p : path) sampler.add(p);
+  return sampler.path();
+}
+
+std::vector<Point2> visible_truth_samples(std::span<const Segment> truth,
+                                          std::span<const Point2> true_path,
+                                          const MapMetricsOptions& options) {
   const SegmentIndex index(truth, options.index_cell_m);
   const std::vector<Point2> poses = subsample_path(true_path, options.trajectory_step_m);
   const double range2 = options.sonar_max_range_m * options.sonar_max_range_m;
@@ -63,7 +69,7 @@ std::vector<SurfaceSample> visible_truth_samples(std::span<const Segment> truth,
   constexpr double kEndGap_m = 0.01;
   // Samples are visited, not stored: a large building's samples would otherwise sit in
   // memory twice (all of them, and the visible ones).
-  std::vector<SurfaceSample> visible;
+  std::vector<Point2> visible;
   for_each_sample(truth, options.sample_step_m, [&](const SurfaceSample& s) {
     for (const Point2& pose : poses) {
       const Point2 d = pose - s.point;
@@ -71,12 +77,12 @@ std::vector<SurfaceSample> visible_truth_samples(std::span<const Segment> truth,
       if (dist2 > range2) continue;
       const double dist = std::sqrt(dist2);
       if (dist <= kEndGap_m) {
-        visible.push_back(s);
+        visible.push_back(s.point);
         return;
       }
       const Point2 near_sample = s.point + d * (kEndGap_m / dist);
       if (!index.blocked(near_sample, pose, s.segment)) {
-        visible.push_back(s);
+        visible.push_back(s.point);
         return;
       }
     }
@@ -94,18 +100,19 @@ double quantile(std::vector<double>& values, double q) {
 }
 
 MapAccuracy evaluate_map(std::span<const Segment> map, std::span<const Segment> truth,
-                         std::span<const SurfaceSample> visible, const MapMetricsOptions& options) {
+                         std::span<const Point2> visible, const MapMetricsOptions& options) {
   MapAccuracy out;
   out.segment_count = map.size();
   const SegmentIndex truth_index(truth, options.index_cell_m);
   std::vector<double> errors;
   double spurious_m = 0.0;
-  for (const SurfaceSample& s : sample_segments(map, options.sample_step_m)) {
+  // Visited, not materialised: the samples would sit in memory beside their errors.
+  for_each_sample(map, options.sample_step_m, [&](const SurfaceSample& s) {
     const double e = truth_index.nearest_distance_m(s.point);
     errors.push_back(e);
     out.map_length_m += s.weight_m;
     if (e > options.spurious_distance_m) spurious_m += s.weight_m;
-  }
+  });
   out.error_samples = errors.size();
   if (!errors.empty()) {
     out.wall_error_median_m = quantile(errors, 0.5);
@@ -117,8 +124,8 @@ MapAccuracy evaluate_map(std::span<const Segment> map, std::span<const Segment> 
   if (!visible.empty()) {
     const SegmentIndex map_index(map, options.index_cell_m);
     std::size_t covered = 0;
-    for (const SurfaceSample& s : visible) {
-      if (map_index.nearest_distance_m(s.point) <= options.coverage_radius_m) ++covered;
+    for (const Point2& p : visible) {
+      if (map_index.nearest_distance_m(p) <= options.coverage_radius_m) ++covered;
     }
     out.wall_coverage = static_cast<double>(covered) / static_cast<double>(visible.size());
   }

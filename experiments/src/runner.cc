@@ -318,16 +318,18 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   // on the truth and the true path, and is the largest piece of the metrics (7 % of a nine-room
   // run's instructions): it runs on a second thread while the maps are merged, the rooms read
   // back and the files written. Same result either way (a pure function, no random draws).
-  std::future<std::vector<SurfaceSample>> visible_later;
+  std::future<std::vector<mapper::Point2>> visible_later;
   if (truth) {
     visible_later = std::async(std::launch::async, [&truth, &session, &geometry] {
-      std::vector<mapper::Point2> path;
-      for (const TrajectoryRow& r : session.rows) {
-        if (r.truth) path.push_back(r.truth->translation());
-      }
       MapMetricsOptions mo;
       mo.sonar_max_range_m = geometry.sonar_max_range_m;
-      return visible_truth_samples(truth->surfaces, path, mo);
+      // visible_truth_samples subsamples the path by the same step; doing it here first gives
+      // the same poses without holding the whole path.
+      PathSubsampler path(mo.trajectory_step_m);
+      for (const TrajectoryRow& r : session.rows) {
+        if (r.truth) path.add(r.truth->translation());
+      }
+      return visible_truth_samples(truth->surfaces, path.path(), mo);
     });
   }
   try {
@@ -355,11 +357,15 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     m.asr_count = m.rooms.size();
     m.memory = memory_metrics(sizes);
 
-    std::vector<mapper::Point2> true_path, est_path, odom_path;
+    // The figures and the SVG draw the paths at 5 cm spacing.
+    constexpr double kDrawnPathStep_m = 0.05;
+    PathSubsampler true_path(kDrawnPathStep_m), est_path(kDrawnPathStep_m),
+        odom_path(kDrawnPathStep_m);
     for (const TrajectoryRow& r : session.rows) {
-      if (r.truth) true_path.push_back(r.truth->translation());
-      est_path.push_back(r.estimate.translation());
-      odom_path.push_back(r.odometry.translation());
+      est_path.add(r.estimate.translation());  // the SVG's
+      if (!figures) continue;                  // the other two only for the figures
+      if (r.truth) true_path.add(r.truth->translation());
+      odom_path.add(r.odometry.translation());
     }
     if (truth) {
       m.localization = evaluate_trajectory(session.rows);
@@ -388,13 +394,13 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     mapper::io::write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry),
                                   durability);
     mapper::io::write_asr_graph_json(mapper.graph(), out / "asr_graph.json", durability);
-    SvgMap svg{corrected, truth ? truth->surfaces : std::vector<mapper::Segment>{},
-               subsample_path(est_path, 0.05), labels};
+    SvgMap svg{corrected, truth ? truth->surfaces : std::vector<mapper::Segment>{}, est_path.path(),
+               labels};
     mapper::io::write_file_atomic(out / "map.svg", map_svg(svg), durability);
     if (truth) {
       MapMetricsOptions mo;
       mo.sonar_max_range_m = geometry.sonar_max_range_m;
-      const std::vector<SurfaceSample> visible = visible_later.get();
+      const std::vector<mapper::Point2> visible = visible_later.get();
       m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, mo);
       m.map_odometry = evaluate_map(segments_of(odometry), truth->surfaces, visible, mo);
     }
@@ -405,9 +411,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       if (truth) fig.true_surfaces = truth->surfaces;
       fig.map_odometry = segments_of(odometry);
       fig.map_corrected = segments_of(corrected);
-      fig.true_path = subsample_path(true_path, 0.05);
-      fig.odometry_path = subsample_path(odom_path, 0.05);
-      fig.estimated_path = subsample_path(est_path, 0.05);
+      fig.true_path = true_path.path();
+      fig.odometry_path = odom_path.path();
+      fig.estimated_path = est_path.path();
       for (const auto& [id, p] : labels) {
         fig.room_labels_at.push_back(p);
         fig.room_labels.push_back(std::to_string(id));

@@ -106,7 +106,8 @@ class ErrorBreakdownBuilder {
 
   const SegmentIndex& truth_index() const { return truth_; }
 
-  /// The block, with the heading part from the run's trajectory.
+  /// The block, with the heading part from the run's trajectory. Releases the rooms' samples:
+  /// call it once, after the last add_room.
   ErrorBreakdown finish(std::span<const TrajectoryRow> rows);
 
  private:

@@ -37,12 +37,28 @@ std::vector<SurfaceSample> sample_segments(std::span<const mapper::Segment> segm
 /// Keeps the first pose, every pose at least `step_m` from the last kept one, and the last.
 std::vector<mapper::Point2> subsample_path(std::span<const mapper::Point2> path, double step_m);
 
+/// subsample_path fed one pose at a time, so a long run's full path is never held in memory
+/// (7644 frames of a 6 x 6 block: 122 KB per path, twice that while a vector doubles).
+class PathSubsampler {
+ public:
+  explicit PathSubsampler(double step_m) : step_m_(step_m) {}
+  void add(const mapper::Point2& p);
+  /// The subsampled path so far (the last pose added included).
+  std::vector<mapper::Point2> path() const;
+
+ private:
+  double step_m_;
+  std::vector<mapper::Point2> kept_;
+  std::optional<mapper::Point2> last_;
+};
+
 /// The true surface samples the robot could have seen: within `sonar_max_range_m` of some
 /// (subsampled) true pose with the straight line to it not crossing any other true surface.
-/// `true_path` is the full true trajectory; it is subsampled here.
-std::vector<SurfaceSample> visible_truth_samples(std::span<const mapper::Segment> truth,
-                                                 std::span<const mapper::Point2> true_path,
-                                                 const MapMetricsOptions& options);
+/// `true_path` is the full true trajectory; it is subsampled here. Only the samples' points
+/// are kept (half the memory of SurfaceSample: the coverage needs nothing else).
+std::vector<mapper::Point2> visible_truth_samples(std::span<const mapper::Segment> truth,
+                                                  std::span<const mapper::Point2> true_path,
+                                                  const MapMetricsOptions& options);
 
 /// The map block of metrics.json for one map (empty optionals: undefined, written as null).
 struct MapAccuracy {
@@ -60,7 +76,7 @@ struct MapAccuracy {
 /// visible_truth_samples over the same `truth`.
 MapAccuracy evaluate_map(std::span<const mapper::Segment> map,
                          std::span<const mapper::Segment> truth,
-                         std::span<const SurfaceSample> visible, const MapMetricsOptions& options);
+                         std::span<const mapper::Point2> visible, const MapMetricsOptions& options);
 
 /// The q-quantile (0..1) with linear interpolation between order statistics (index q·(n−1),
 /// the numpy default); the median of an even count is the mean of the middle two.
