@@ -1,10 +1,11 @@
-// Issue 10's map figures on the shipped route experiments, steering by the estimate, seeds 1-5:
+// Issue 10's map figures on the shipped route and explore experiments, steering by the
+// estimate, seeds 1-5:
 // every seed's median and p90 wall error, coverage, spurious fraction and final heading error
 // held to what was measured (docs/results.md, 2026-12-01: each bound 1.25x the worst seed,
 // coverage 0.8x), and EM never worse than odometry alone on the mean over the seeds (one of
-// the issue's targets, met on these worlds). The issue's other targets (median ≤ 0.10 m, p90 ≤
-// 0.30 m, spurious ≤ 0.15, ≤ 2° where odometry drifts ≥ 5°) are not met yet; these bounds make
-// a regression show and are to be tightened as the maps improve.
+// the issue's targets, met on these worlds but explore_two_rooms). The issue's other targets
+// (median ≤ 0.10 m, p90 ≤ 0.30 m, spurious ≤ 0.15, ≤ 2° where odometry drifts ≥ 5°) are not met
+// yet; these bounds make a regression show and are to be tightened as the maps improve.
 #include <gtest/gtest.h>
 
 #include "run_seed.h"
@@ -35,6 +36,9 @@ struct FidelityCase {
   double min_coverage;
   double max_spurious;
   std::optional<double> max_heading_deg;  ///< corrected; none where EM has nothing to do
+  /// EM's mean final heading error over the seeds no worse than odometry's (issue 10's target);
+  /// false only where it is measured broken, with the reason at the instance.
+  bool em_not_worse = true;
 };
 
 void PrintTo(const FidelityCase& c, std::ostream* os) { *os << c.name; }
@@ -62,7 +66,9 @@ TEST_P(MapFidelity, EverySeedWithinWhatWasMeasured) {
       EXPECT_LE(heading["corrected"].get<double>(), *c.max_heading_deg);
     }
   }
-  EXPECT_LE(corrected_sum, odometry_sum) << "EM made the mean final heading error worse";
+  if (c.em_not_worse) {
+    EXPECT_LE(corrected_sum, odometry_sum) << "EM made the mean final heading error worse";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -84,6 +90,28 @@ INSTANTIATE_TEST_SUITE_P(
                      0.122,
                      0.083,
                      std::nullopt}),
+    [](const auto& info) { return info.param.name; });
+
+// The shipped explore experiments (release build, 2026-12-02, seeds 1-5; worst seeds in the
+// comments; same rules: 1.25x the worst, coverage 0.8x).
+INSTANTIATE_TEST_SUITE_P(
+    ShippedExplore, MapFidelity,
+    ::testing::Values(
+        // 0.387 m, 0.871 m, 0.554, 0.564, 25.5°; mean 12.54° -> 8.91°.
+        FidelityCase{"explore_nine_rooms", "explore_nine_rooms", {}, 0.48, 1.09, 0.44, 0.71, 31.9},
+        // 0.409 m, 1.041 m, 0.501, 0.580, 18.1°; mean 30.68° -> 9.99°.
+        FidelityCase{
+            "explore_three_room_slam", "explore_three_room_slam", {}, 0.51, 1.30, 0.40, 0.73, 22.7},
+        // 0.365 m, 1.067 m, 0.445, 0.569, 10.5°; mean 9.66° -> 5.61°.
+        FidelityCase{
+            "explore_small_clutter", "explore_small_clutter", {}, 0.46, 1.33, 0.36, 0.71, 13.1},
+        // 0.276 m, 0.953 m, 0.573, 0.474, 31.8°. EM is worse than odometry here on the mean
+        // (7.95° -> 9.74°): on seed 5 it measured room 1's mean heading error (-13°, the drift
+        // swung from -6° to about -20° and back inside the room) and applied it at the room's
+        // end, where the error was -1.2°: 14.9° -> 31.8° at the end of the run. An open
+        // failure of issue 10's target (docs/results.md), not asserted until it is fixed.
+        FidelityCase{
+            "explore_two_rooms", "explore_two_rooms", {}, 0.35, 1.19, 0.46, 0.59, 39.8, false}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace
