@@ -318,11 +318,11 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   // on the truth and the true path, and is the largest piece of the metrics (7 % of a nine-room
   // run's instructions): it runs on a second thread while the maps are merged, the rooms read
   // back and the files written. Same result either way (a pure function, no random draws).
+  MapMetricsOptions metric_options;
+  metric_options.sonar_max_range_m = geometry.sonar_max_range_m;
   std::future<std::vector<mapper::Point2>> visible_later;
   if (truth) {
-    visible_later = std::async(std::launch::async, [&truth, &session, &geometry] {
-      MapMetricsOptions mo;
-      mo.sonar_max_range_m = geometry.sonar_max_range_m;
+    visible_later = std::async(std::launch::async, [&truth, &session, mo = metric_options] {
       // visible_truth_samples subsamples the path by the same step; doing it here first gives
       // the same poses without holding the whole path.
       PathSubsampler path(mo.trajectory_step_m);
@@ -398,11 +398,10 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                labels};
     mapper::io::write_file_atomic(out / "map.svg", map_svg(svg), durability);
     if (truth) {
-      MapMetricsOptions mo;
-      mo.sonar_max_range_m = geometry.sonar_max_range_m;
       const std::vector<mapper::Point2> visible = visible_later.get();
-      m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, mo);
-      m.map_odometry = evaluate_map(segments_of(odometry), truth->surfaces, visible, mo);
+      m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, metric_options);
+      m.map_odometry =
+          evaluate_map(segments_of(odometry), truth->surfaces, visible, metric_options);
     }
 
     if (figures) {
