@@ -127,6 +127,16 @@ TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {
   EXPECT_NE(error_of(p, {"output.nav_trace=sometimes"}), "no error");
 }
 
+TEST(ExperimentConfig, DoorSearchIsTheControllersDefaultUnlessSet) {
+  const fs::path p = write_temp("good_door_search.yaml", kGood);
+  EXPECT_FALSE(load_experiment(p, {}).controller.door_search.has_value());
+  EXPECT_EQ(load_experiment(p, {"controller.door_search=false"}).controller.door_search,
+            std::optional<bool>(false));
+  EXPECT_EQ(load_experiment(p, {"controller.door_search=true"}).controller.door_search,
+            std::optional<bool>(true));
+  EXPECT_NE(error_of(p, {"controller.door_search=sometimes"}), "no error");
+}
+
 TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
   std::string text = kGood;
   text.replace(text.find("  cell_scale_mm"), 15, "  cell_scale_nm");

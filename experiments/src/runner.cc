@@ -56,6 +56,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       mapper::nav::RouteOptions o;
       o.speed_mps = c.speed_mps;
       o.waypoint_tolerance_m = c.waypoint_tolerance_m;
+      if (c.door_search && !*c.door_search) o.door.search_per_waypoint = 0;
       return mapper::nav::make_route_follower(o, c.waypoints);
     }
     case ControllerKind::kExplore: {
@@ -65,6 +66,10 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       o.strategy = c.explore_strategy;
       o.time_budget_s = c.explore_time_budget_s;
       o.distance_budget_m = c.explore_distance_budget_m;
+      if (c.door_search) {
+        o.door_search_per_waypoint =
+            *c.door_search ? mapper::nav::DoorOptions{}.search_per_waypoint : 0;
+      }
       return mapper::nav::make_explorer(o);
     }
     case ControllerKind::kNone:

@@ -156,8 +156,9 @@ bool DoorPassage::offer(const std::optional<Opening>& opening, double time_s) {
   return active();
 }
 
-void DoorPassage::start(const Opening& opening, double time_s) {
+void DoorPassage::start(const Opening& opening, double time_s, bool refine) {
   opening_ = opening;
+  refine_ = refine;
   mode_ = NavMode::kDoorAlign;
   start_s_ = time_s;
   seen_s_ = time_s;
@@ -193,7 +194,8 @@ std::optional<Point2> DoorPassage::step(const std::vector<ObstaclePoint>& obstac
   const Point2 p = pose.translation();
   // Before the crossing, keep refining the opening from what the sonar now sees of it; in the
   // opening itself the jambs are beside the robot (outside the front half plane): freeze.
-  if (mode_ == NavMode::kDoorAlign) {
+  if (mode_ == NavMode::kDoorAlign && !refine_) seen_s_ = time_s;
+  if (mode_ == NavMode::kDoorAlign && refine_) {
     // Look through the locked opening (not at the goal, which may be far off to a side).
     const Point2 through = opening_.center_m + 1.5 * opening_.normal;
     (void)goal_m;

@@ -38,8 +38,10 @@ class DoorPassage {
  public:
   explicit DoorPassage(const DoorOptions& options) : options_(options) {}
 
-  /// Starts a passage through `opening` at time_s.
-  void start(const Opening& opening, double time_s);
+  /// Starts a passage through `opening` at time_s. `refine` = false keeps the opening as
+  /// given until the crossing (the door search heard it square-on, which the front
+  /// transducers' re-detection would only smear).
+  void start(const Opening& opening, double time_s, bool refine = true);
 
   /// Offers this cycle's detection (or none); starts the passage once the same opening (within
   /// track_m) has been detected without a break for confirm_s. Returns active().
@@ -69,6 +71,7 @@ class DoorPassage {
   Opening opening_;
   double start_s_ = 0.0;
   double seen_s_ = 0.0;
+  bool refine_ = true;       // re-detect the opening while aligning
   double best_along_ = 0.0;  // crossing: farthest along the axis so far, and when
   double progress_s_ = 0.0;
   std::size_t crossed_ = 0;

@@ -1,6 +1,6 @@
-// The explorers in closed loop with an ideal robot in small synthetic worlds: an exact,
-// noise-free sonar (the nearest wall within ±12° of each transducer's axis) and exact
-// odometry, so what is tested is the behaviour, not the sensing.
+// The explorers in closed loop with an ideal robot in small synthetic worlds (nav/loop_world.h:
+// an exact, noise-free sonar and exact odometry), so what is tested is the behaviour, not the
+// sensing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "nav/loop_world.h"
 #include "nav/nav_test_util.h"
 
 namespace cogmap::mapper::nav {
@@ -18,92 +19,12 @@ namespace {
 using testing::frame_at;
 using testing::integrate;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// Distance along the ray from `o` in direction `d` (unit) to segment `s`, or infinity.
-double ray_hit(const Point2& o, const Point2& d, const Segment& s) {
-  const Point2 e = s.b - s.a;
-  const double den = d.x() * e.y() - d.y() * e.x();
-  if (std::abs(den) < 1e-12) return kInf;
-  const Point2 w = s.a - o;
-  const double t = (w.x() * e.y() - w.y() * e.x()) / den;
-  const double u = (w.x() * d.y() - w.y() * d.x()) / den;
-  return t > 0.0 && u >= 0.0 && u <= 1.0 ? t : kInf;
-}
-
-double point_segment_m(const Point2& p, const Segment& s) {
-  const Point2 e = s.b - s.a;
-  const double t = std::clamp((p - s.a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-  return (p - (s.a + t * e)).norm();
-}
-
-struct World {
-  std::vector<Segment> walls;
-
-  /// Four transducers per 100 ms frame, the ring in order (a P2-AT ring fires in ~0.4 s).
-  std::vector<SonarReading> sonar(const Pose2& pose, const RobotGeometry& robot, int frame) const {
-    std::vector<SonarReading> out;
-    for (int k = 0; k < 4; ++k) {
-      const int i = (4 * frame + k) % static_cast<int>(robot.sonars.size());
-      const SonarMount& m = robot.sonars[static_cast<std::size_t>(i)];
-      const Point2 origin = pose.transform(Point2(m.x_m, m.y_m));
-      double range = kInf;
-      for (double off = -12.0; off <= 12.0; off += 3.0) {
-        const double a = pose.theta_rad + m.heading_rad + off * std::numbers::pi / 180.0;
-        const Point2 d(std::cos(a), std::sin(a));
-        for (const Segment& s : walls) range = std::min(range, ray_hit(origin, d, s));
-      }
-      const bool echo = range <= robot.sonar_max_range_m;
-      out.push_back({i, echo ? range : robot.sonar_max_range_m, echo, frame * testing::kCycleS});
-    }
-    return out;
-  }
-
-  double clearance_m(const Point2& p) const {
-    double c = kInf;
-    for (const Segment& s : walls) c = std::min(c, point_segment_m(p, s));
-    return c;
-  }
-};
-
-World box(double x0, double y0, double x1, double y1) {
-  return {{{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x1, y1}, {x0, y1}}, {{x0, y1}, {x0, y0}}}};
-}
-
-/// Two 5 x 4 m rooms side by side (x 0-5 and 5-10), a 1 m doorway at y 1.5-2.5 between them.
-World two_rooms() {
-  return {{{{0, 0}, {10, 0}},
-           {{10, 0}, {10, 4}},
-           {{10, 4}, {0, 4}},
-           {{0, 4}, {0, 0}},
-           {{5, 0}, {5, 1.5}},
-           {{5, 2.5}, {5, 4}}}};
-}
-
-struct LoopRun {
-  bool done = false;
-  bool complete = false;
-  double time_s = 0.0;
-  double min_clearance_m = kInf;  // robot centre to the nearest wall
-  double max_x_m = -kInf;
-};
-
-LoopRun drive(Controller& c, const World& w, Pose2 pose, double max_s) {
-  const RobotGeometry robot = p2at_geometry();
-  LoopRun r;
-  const int frames = static_cast<int>(max_s / testing::kCycleS);
-  for (int i = 0; i < frames && !c.done(); ++i) {
-    SensorFrame f = frame_at(i, w.sonar(pose, robot, i));
-    f.odometry = pose;  // exact odometry
-    pose = integrate(pose, c.step({&f, pose, nullptr, &robot}));
-    r.min_clearance_m = std::min(r.min_clearance_m, w.clearance_m(pose.translation()));
-    r.max_x_m = std::max(r.max_x_m, pose.x_m);
-    r.time_s = (i + 1) * testing::kCycleS;
-  }
-  r.done = c.done();
-  r.complete = c.trace().exploration_complete;
-  return r;
-}
+using testing::box;
+using testing::drive;
+using testing::kInf;
+using testing::LoopRun;
+using testing::two_rooms;
+using testing::World;
 
 TEST(FrontierExplorerLoop, ExploresAClosedRoomAndStops) {
   auto c = make_explorer(ExploreOptions{});

@@ -50,6 +50,8 @@ const char* to_string(NavMode mode) {
       return "edge_corner";
     case NavMode::kEdgePivot:
       return "edge_pivot";
+    case NavMode::kDoorSearch:
+      return "door_search";
   }
   return "?";
 }

@@ -19,6 +19,13 @@ bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& rob
 bool wall_across(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
                  const Point2& goal_m, double radius_m, double max_m);
 
+/// The structure of the first obstacle within `radius_m` of the line from robot_m toward goal_m
+/// (from 0.1 m out to max_m, or radius_m beyond the goal): every obstacle point within 1 m of
+/// that one, as offsets from robot_m. Empty when nothing blocks.
+std::vector<Point2> blocking_structure(const std::vector<ObstaclePoint>& obstacles,
+                                       const Point2& robot_m, const Point2& goal_m, double radius_m,
+                                       double max_m);
+
 /// The angle between the line from robot_m toward goal_m and the structure of the first
 /// obstacle within `radius_m` of it (up to max_m): the principal direction of the obstacle
 /// points within 1 m of that one. π/2 for a wall square across the way, near 0 for a wall

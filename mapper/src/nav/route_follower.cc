@@ -10,6 +10,7 @@
 
 #include "cogmap/mapper/nav/controller.h"
 #include "nav/door_passage.h"
+#include "nav/door_search.h"
 #include "nav/nav_core.h"
 #include "nav/route_follower.h"
 
@@ -22,7 +23,8 @@ class RouteFollower final : public ReroutableFollower {
       : options_(options),
         waypoints_(std::move(waypoints)),
         core_(core_options_of(options)),
-        door_(options.door) {}
+        door_(options.door),
+        search_(options.door) {}
 
   VelocityCommand step(const NavInput& input) override {
     if (input.frame == nullptr) return core_.stop(NavMode::kIdle);
@@ -56,6 +58,8 @@ class RouteFollower final : public ReroutableFollower {
     const Point2 to_goal = goal - here;
     const double target_rad = std::atan2(to_goal.y(), to_goal.x());
     if (const auto cmd = core_.recover(input, target_rad)) return *cmd;
+    if (door_.active()) search_.stop();  // the door behaviour has an opening: it leads
+    if (const auto cmd = search_step(input, goal)) return *cmd;
     if (const auto cmd = door_step(input, door_goal(here))) return *cmd;
     if (lane_clear(here, goal)) {
       // Nothing sensed in the body's lane to the waypoint: go straight. VFH's enlargement
@@ -64,6 +68,16 @@ class RouteFollower final : public ReroutableFollower {
       return core_.drive_direct(input, target_rad, options_.speed_mps, NavMode::kDirect);
     }
     if (const auto cmd = probe_step(input, goal)) return *cmd;
+    // A probe that has just stalled met the wall where the door is not: sweep along it.
+    if (search_due_) {
+      search_due_ = false;
+      if (searches_ < options_.door.search_per_waypoint &&
+          search_.start(core_.field().points(), input.pose, goal, waypoint_after(),
+                        options_.vfh.safety_radius_m, now)) {
+        ++searches_;
+        if (const auto cmd = search_step(input, goal)) return *cmd;
+      }
+    }
     return core_.drive_toward(input, target_rad);
   }
 
@@ -75,6 +89,9 @@ class RouteFollower final : public ReroutableFollower {
     leg_start_.reset();  // the next step starts the leg and the give-up clock
     probe_failed_at_.reset();
     probe_since_s_.reset();
+    search_.stop();
+    search_due_ = false;
+    searches_ = 0;
     best_m_ = std::numeric_limits<double>::infinity();
   }
   const NavTrace& trace() const override { return core_.trace(); }
@@ -88,6 +105,36 @@ class RouteFollower final : public ReroutableFollower {
       return waypoints_[index_ + 1];
     }
     return w;
+  }
+
+  /// The waypoint after the current one, if there is one.
+  std::optional<Point2> waypoint_after() const {
+    if (index_ + 1 < waypoints_.size()) return waypoints_[index_ + 1];
+    return std::nullopt;
+  }
+
+  /// The door search's command this cycle while a sweep runs; a gap it hears starts the door
+  /// behaviour's passage through it (which steers from this cycle on).
+  std::optional<VelocityCommand> search_step(const NavInput& input, const Point2& goal) {
+    if (!search_.active()) return std::nullopt;
+    static const RobotGeometry kDefaultRobot;
+    const RobotGeometry& robot = input.robot != nullptr ? *input.robot : kDefaultRobot;
+    const double now = input.frame->time_s;
+    const auto s = search_.step(*input.frame, core_.field().points(), robot, input.pose, now);
+    if (s.found) {
+      // A gap heard is progress: the passage gets the whole give_up_s (the sweep spent it
+      // moving along the wall, not nearer the waypoint).
+      progress_s_ = now;
+      door_.start(*s.found, now, false);
+      return door_step(input, goal);
+    }
+    if (!s.aim) {
+      probe_failed_at_ = input.pose.translation();  // swept, nothing heard: VFH until rearmed
+      return std::nullopt;
+    }
+    const Point2 d = *s.aim - input.pose.translation();
+    return core_.drive_direct(input, std::atan2(d.y(), d.x()), options_.door.speed_mps,
+                              NavMode::kDoorSearch);
   }
 
   /// The door behaviour's command this cycle, if it is (or now becomes) active.
@@ -180,6 +227,7 @@ class RouteFollower final : public ReroutableFollower {
     if (now - *probe_since_s_ > o.probe_stall_s) {
       probe_failed_at_ = here;
       probe_since_s_.reset();
+      search_due_ = true;
       return std::nullopt;
     }
     return core_.drive_direct(input, goal_rad, o.speed_mps, NavMode::kDoorProbe);
@@ -201,6 +249,9 @@ class RouteFollower final : public ReroutableFollower {
     attempts_ = 0;
     probe_failed_at_.reset();
     probe_since_s_.reset();
+    search_.stop();
+    search_due_ = false;
+    searches_ = 0;
     best_m_ = std::numeric_limits<double>::infinity();
     progress_s_ = now;
   }
@@ -245,8 +296,11 @@ class RouteFollower final : public ReroutableFollower {
   std::optional<Point2> probe_failed_at_;  // where the probe last gave up (this waypoint)
   std::optional<double> probe_since_s_;    // probing: when it last came progress_m nearer
   double probe_best_m_ = 0.0;              // ...and how near that was
+  bool search_due_ = false;                // the probe stalled this cycle: sweep the wall
+  int searches_ = 0;                       // sweeps started for the current waypoint
   NavCore core_;
   DoorPassage door_;
+  DoorSearch search_;
 };
 
 }  // namespace

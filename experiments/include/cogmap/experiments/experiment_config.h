@@ -47,6 +47,9 @@ struct ControllerConfig {
   mapper::nav::ExploreStrategy explore_strategy = mapper::nav::ExploreStrategy::kFrontier;
   double explore_time_budget_s = 0.0;
   double explore_distance_budget_m = 0.0;
+  /// `door_search`: sweep a wall for its door when the probe stalls (DoorOptions); unset =
+  /// the controller's default (on for route, off for explore; docs/algorithms.md).
+  std::optional<bool> door_search;
 };
 
 /// Bounds on what an experiment may ask for (docs/reliability.md "Limits"): beyond them a
