@@ -11,7 +11,9 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "experiment_config_test";
+  // One directory per test: ctest runs the tests of this file as parallel processes.
+  const fs::path dir = fs::path(::testing::TempDir()) / "experiment_config_test" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   const fs::path p = dir / name;
   std::ofstream(p) << text;

@@ -13,7 +13,9 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "sweep_test";
+  // One directory per test: ctest runs the tests of this file as parallel processes.
+  const fs::path dir = fs::path(::testing::TempDir()) / "sweep_test" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   std::ofstream(dir / name) << text;
   return dir / name;
