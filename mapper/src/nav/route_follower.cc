@@ -69,16 +69,22 @@ class RouteFollower final : public ReroutableFollower {
     }
     if (const auto cmd = probe_step(input, goal)) return *cmd;
     // A probe that has just stalled met the wall where the door is not: sweep along it.
-    if (search_due_) {
-      search_due_ = false;
-      if (searches_ < options_.door.search_per_waypoint &&
-          search_.start(core_.field().points(), input.pose, goal, waypoint_after(),
-                        options_.vfh.safety_radius_m, now)) {
-        ++searches_;
-        if (const auto cmd = search_step(input, goal)) return *cmd;
-      }
-    }
+    if (const auto cmd = try_search(input, goal)) return *cmd;
     return core_.drive_toward(input, target_rad);
+  }
+
+  /// Starts a sweep if one is due (and allowed for this waypoint) and returns its first
+  /// command.
+  std::optional<VelocityCommand> try_search(const NavInput& input, const Point2& goal) {
+    if (!search_due_) return std::nullopt;
+    search_due_ = false;
+    if (searches_ >= options_.door.search_per_waypoint ||
+        !search_.start(core_.field().points(), input.pose, goal, waypoint_after(),
+                       options_.vfh.safety_radius_m, input.frame->time_s)) {
+      return std::nullopt;
+    }
+    ++searches_;
+    return search_step(input, goal);
   }
 
   bool done() const override { return index_ >= waypoints_.size(); }
