@@ -94,15 +94,15 @@ TEST(ExperimentConfig, DefaultsAreTheThesisValues) {
 TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   const fs::path p = write_temp("minimal_em.yaml", "name: m\nworld: w.yaml\n");
   const Experiment defaults = load_experiment(p);
-  EXPECT_TRUE(defaults.mapper.localizer.odometry_prior);  // the prior is EM's gate
-  EXPECT_FALSE(defaults.mapper.localizer.prior_shrinks);  // ... and only the gate
-  EXPECT_EQ(defaults.mapper.localizer.reference_rooms, 2u);
+  EXPECT_TRUE(defaults.mapper.localizer.odometry_prior);      // the prior is EM's gate
+  EXPECT_TRUE(defaults.mapper.localizer.prior_shrinks);       // ... and the posterior mean applied
+  EXPECT_EQ(defaults.mapper.localizer.reference_rooms, 32u);  // against the last 32 rooms
   EXPECT_FALSE(defaults.mapper.glimpse.enabled);
   const Experiment e = load_experiment(
-      p, {"mapper.em_prior_shrinks=true", "mapper.em_reference_rooms=8", "mapper.glimpse=true",
+      p, {"mapper.em_prior_shrinks=false", "mapper.em_reference_rooms=8", "mapper.glimpse=true",
           "mapper.glimpse_distance_m=4.5", "mapper.glimpse_turn_deg=90",
           "mapper.glimpse_min_wall_m=0.5", "mapper.glimpse_min_total_wall_m=2"});
-  EXPECT_TRUE(e.mapper.localizer.prior_shrinks);
+  EXPECT_FALSE(e.mapper.localizer.prior_shrinks);
   EXPECT_EQ(e.mapper.localizer.reference_rooms, 8u);
   EXPECT_TRUE(e.mapper.glimpse.enabled);
   EXPECT_DOUBLE_EQ(e.mapper.glimpse.distance_m, 4.5);
