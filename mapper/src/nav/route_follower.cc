@@ -59,7 +59,7 @@ class RouteFollower final : public ReroutableFollower {
     const double target_rad = std::atan2(to_goal.y(), to_goal.x());
     if (const auto cmd = core_.recover(input, target_rad)) return *cmd;
     if (door_.active()) search_.stop();  // the door behaviour has an opening: it leads
-    if (const auto cmd = search_step(input, goal)) return *cmd;
+    if (const auto cmd = search_step(input)) return *cmd;
     if (const auto cmd = door_step(input, door_goal(here))) return *cmd;
     if (lane_clear(here, goal)) {
       // Nothing sensed in the body's lane to the waypoint: go straight. VFH's enlargement
@@ -84,7 +84,7 @@ class RouteFollower final : public ReroutableFollower {
       return std::nullopt;
     }
     ++searches_;
-    return search_step(input, goal);
+    return search_step(input);
   }
 
   bool done() const override { return index_ >= waypoints_.size(); }
@@ -121,18 +121,17 @@ class RouteFollower final : public ReroutableFollower {
 
   /// The door search's command this cycle while a sweep runs; a gap it hears starts the door
   /// behaviour's passage through it (which steers from this cycle on).
-  std::optional<VelocityCommand> search_step(const NavInput& input, const Point2& goal) {
+  std::optional<VelocityCommand> search_step(const NavInput& input) {
     if (!search_.active()) return std::nullopt;
-    static const RobotGeometry kDefaultRobot;
-    const RobotGeometry& robot = input.robot != nullptr ? *input.robot : kDefaultRobot;
     const double now = input.frame->time_s;
-    const auto s = search_.step(*input.frame, core_.field().points(), robot, input.pose, now);
+    const auto s =
+        search_.step(*input.frame, core_.field().points(), core_.robot(), input.pose, now);
     if (s.found) {
       // A gap heard is progress: the passage gets the whole give_up_s (the sweep spent it
       // moving along the wall, not nearer the waypoint).
       progress_s_ = now;
       door_.start(*s.found, now, false);
-      return door_step(input, goal);
+      return door_step(input, door_goal(input.pose.translation()));
     }
     if (!s.aim) {
       probe_failed_at_ = input.pose.translation();  // swept, nothing heard: VFH until rearmed
