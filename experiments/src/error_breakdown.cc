@@ -93,8 +93,7 @@ std::vector<ErrorPiece> error_pieces(std::span<const Segment> map, const Segment
   return out;
 }
 
-std::optional<RoomHeadingError> room_heading_error(std::span<const TrajectoryRow> rows,
-                                                   const RoomSpan& room) {
+std::optional<RoomHeadingError> room_heading_error(TrajectoryView rows, const RoomSpan& room) {
   const TrajectoryRow* first = nullptr;
   const TrajectoryRow* last = nullptr;
   for (const TrajectoryRow& row : rows) {
@@ -113,8 +112,7 @@ std::optional<RoomHeadingError> room_heading_error(std::span<const TrajectoryRow
                           heading_error_deg(*last, last_corrected ? 0.0 : room.room_to_world_rad)};
 }
 
-HeadingBreakdown heading_breakdown(std::span<const TrajectoryRow> rows,
-                                   std::span<const RoomSpan> rooms) {
+HeadingBreakdown heading_breakdown(TrajectoryView rows, std::span<const RoomSpan> rooms) {
   std::vector<double> entry, exit, drift;
   for (const RoomSpan& room : rooms) {
     const std::optional<RoomHeadingError> e = room_heading_error(rows, room);
@@ -156,7 +154,7 @@ void ErrorBreakdownBuilder::add_room(const Pose2& room_to_world, const mapper::A
   }
 }
 
-ErrorBreakdown ErrorBreakdownBuilder::finish(std::span<const TrajectoryRow> rows) {
+ErrorBreakdown ErrorBreakdownBuilder::finish(TrajectoryView rows) {
   ErrorBreakdown b;
   b.grid = stage_error(grid_m_);
   b.cleaned = stage_error(cleaned_m_);

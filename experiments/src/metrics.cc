@@ -132,7 +132,7 @@ MapAccuracy evaluate_map(std::span<const Segment> map, std::span<const Segment> 
   return out;
 }
 
-std::optional<LocalizationAccuracy> evaluate_trajectory(std::span<const TrajectoryRow> rows) {
+std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows) {
   LocalizationAccuracy out;
   double sum_odom = 0.0, sum_est = 0.0;
   const TrajectoryRow* last = nullptr;

@@ -55,8 +55,8 @@ double footprint_clearance_m(const mapper::Pose2& pose, std::span<const mapper::
 
 }  // namespace
 
-void add_contacts(NavMetrics& nav, std::span<const TrajectoryRow> rows,
-                  std::span<const mapper::Segment> surfaces, const mapper::RobotGeometry& robot) {
+void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::Segment> surfaces,
+                  const mapper::RobotGeometry& robot) {
   std::size_t episodes = 0;
   double time_s = 0.0;
   nav.contact_start_s.clear();
@@ -85,10 +85,12 @@ void add_mode_interval(NavMetrics& nav, const std::string& mode, double dtheta_r
   nav.time_s_by_mode[mode] += dt_s;
 }
 
-double odometry_distance_m(std::span<const TrajectoryRow> rows) {
+double odometry_distance_m(TrajectoryView rows) {
   double d = 0.0;
-  for (std::size_t i = 1; i < rows.size(); ++i) {
-    d += (rows[i].odometry.translation() - rows[i - 1].odometry.translation()).norm();
+  const TrajectoryRow* previous = nullptr;
+  for (const TrajectoryRow& row : rows) {
+    if (previous) d += (row.odometry.translation() - previous->odometry.translation()).norm();
+    previous = &row;
   }
   return d;
 }

@@ -21,12 +21,12 @@ std::string svg_num(double v) {
 
 /// `header`, then `append_row(out, row)` for each row, handed to `emit` every `rows_per_chunk`
 /// rows (and at the end).
-template <typename Row, typename AppendRow>
-void csv_chunks(std::string header, std::span<const Row> rows, const AppendRow& append_row,
+template <typename Rows, typename AppendRow>
+void csv_chunks(std::string header, const Rows& rows, const AppendRow& append_row,
                 const std::function<void(std::string_view)>& emit, std::size_t rows_per_chunk) {
   std::string out = std::move(header);
   std::size_t in_chunk = 0;
-  for (const Row& r : rows) {
+  for (const auto& r : rows) {
     append_row(out, r);
     if (++in_chunk >= std::max<std::size_t>(rows_per_chunk, 1)) {
       emit(out);
@@ -39,8 +39,7 @@ void csv_chunks(std::string header, std::span<const Row> rows, const AppendRow& 
 
 }  // namespace
 
-void trajectory_csv_chunks(std::span<const TrajectoryRow> rows,
-                           const std::function<void(std::string_view)>& emit,
+void trajectory_csv_chunks(TrajectoryView rows, const std::function<void(std::string_view)>& emit,
                            std::size_t rows_per_chunk) {
   const auto append = [](std::string& out, const TrajectoryRow& r) {
     out += f(r.t_s);
@@ -82,7 +81,7 @@ void nav_trace_csv_chunks(std::span<const NavTraceRow> rows,
       rows, append, emit, rows_per_chunk);
 }
 
-std::string trajectory_csv(std::span<const TrajectoryRow> rows) {
+std::string trajectory_csv(TrajectoryView rows) {
   std::string out;
   trajectory_csv_chunks(rows, [&](std::string_view piece) { out += piece; });
   return out;

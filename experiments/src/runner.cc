@@ -98,7 +98,7 @@ mapper::SensorFrame without_truth(const mapper::SensorFrame& frame) {
 
 /// The frame loop and its products, kept apart from the writing of files.
 struct SessionResult {
-  std::vector<TrajectoryRow> rows;
+  TrajectoryLog rows;                 // chunked: no doubling slack as a long run grows
   std::vector<NavTraceRow> nav_rows;  // output.nav_trace only
   std::optional<bool> route_completed;
   double sim_time_s = 0.0;
@@ -115,7 +115,7 @@ NavMetrics nav_metrics(const mapper::nav::Controller& controller, const Controll
   nav.waypoints_skipped = t.skipped_waypoints;
   nav.recoveries = t.recoveries;
   nav.door_passages = t.door_passages;
-  nav.distance_m = odometry_distance_m(session.rows);
+  nav.distance_m = odometry_distance_m(session.rows.view());
   nav.stalled_s = stalled_s;
   if (c.type == ControllerKind::kExplore) {
     if (t.rooms_visited > 0) nav.rooms_visited = t.rooms_visited;  // when the explorer counts
@@ -331,7 +331,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       // visible_truth_samples subsamples the path by the same step; doing it here first gives
       // the same poses without holding the whole path.
       PathSubsampler path(mo.trajectory_step_m);
-      for (const TrajectoryRow& r : session.rows) {
+      for (const TrajectoryRow& r : session.rows.view()) {
         if (r.truth) path.add(r.truth->translation());
       }
       return visible_truth_samples(truth->surfaces, path.path(), mo);
@@ -366,18 +366,19 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     constexpr double kDrawnPathStep_m = 0.05;
     PathSubsampler true_path(kDrawnPathStep_m), est_path(kDrawnPathStep_m),
         odom_path(kDrawnPathStep_m);
-    for (const TrajectoryRow& r : session.rows) {
+    const TrajectoryView rows = session.rows.view();
+    for (const TrajectoryRow& r : rows) {
       est_path.add(r.estimate.translation());  // the SVG's
       if (!figures) continue;                  // the other two only for the figures
       if (r.truth) true_path.add(r.truth->translation());
       odom_path.add(r.odometry.translation());
     }
     if (truth) {
-      m.localization = evaluate_trajectory(session.rows);
-      m.error_breakdown = breakdown->finish(session.rows);
-      add_contacts(m.nav, session.rows, truth->surfaces, geometry);
+      m.localization = evaluate_trajectory(rows);
+      m.error_breakdown = breakdown->finish(rows);
+      add_contacts(m.nav, rows, truth->surfaces, geometry);
       if (experiment.controller.type == ControllerKind::kExplore) {
-        const TrueRooms rooms = count_true_rooms(truth->surfaces, session.rows);
+        const TrueRooms rooms = count_true_rooms(truth->surfaces, rows);
         if (rooms.measurable) {  // else null: a world too large to rasterise finely
           m.nav.rooms_total_true = rooms.total;
           m.nav.rooms_visited_true = rooms.visited;
@@ -387,8 +388,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
 
     mapper::io::write_file_atomic_chunks(
         out / "trajectory.csv",
-        [&](const mapper::io::ChunkSink& emit) { trajectory_csv_chunks(session.rows, emit); },
-        durability);
+        [&](const mapper::io::ChunkSink& emit) { trajectory_csv_chunks(rows, emit); }, durability);
     if (experiment.nav_trace) {
       mapper::io::write_file_atomic_chunks(
           out / "nav_trace.csv",

@@ -153,7 +153,7 @@ Raster make_raster(std::span<const mapper::Segment> surfaces, const TrueRoomsOpt
 /// border free and connected to the outside). A start on a wall cell (a coarsened raster's walls
 /// are thicker than the true ones) moves to the nearest free cell within a few cells. Empty when
 /// no row has a finite true position, or no free cell is near it.
-std::optional<std::size_t> start_cell(const Raster& r, std::span<const TrajectoryRow> rows,
+std::optional<std::size_t> start_cell(const Raster& r, TrajectoryView rows,
                                       const std::vector<float>& d2, double h) {
   const TrajectoryRow* first = nullptr;
   for (const TrajectoryRow& row : rows) {
@@ -205,8 +205,8 @@ bool on_border(const Raster& r, std::size_t c) {
 
 }  // namespace
 
-TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces,
-                           std::span<const TrajectoryRow> rows, const TrueRoomsOptions& options) {
+TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces, TrajectoryView rows,
+                           const TrueRoomsOptions& options) {
   const Raster r = make_raster(surfaces, options);
   if (r.cells() == 0) return {};
   if (r.res > options.max_measurable_resolution_m) return {0, 0, false};

@@ -82,6 +82,8 @@ class DoorSearch {
   bool start(const std::vector<ObstaclePoint>& obstacles, const Pose2& pose, const Point2& goal_m,
              const std::optional<Point2>& then_m, double lane_m, double time_s);
   bool active() const { return profile_.has_value() || heard_.has_value(); }
+  /// A gap has been heard and the robot is on its way to (or turning at) its approach point.
+  bool gap_heard() const { return heard_.has_value(); }
   void stop() {
     profile_.reset();
     heard_.reset();

@@ -124,8 +124,12 @@ class RouteFollower final : public ReroutableFollower {
   std::optional<VelocityCommand> search_step(const NavInput& input) {
     if (!search_.active()) return std::nullopt;
     const double now = input.frame->time_s;
+    const bool had_gap = search_.gap_heard();
     const auto s =
         search_.step(*input.frame, core_.field().points(), core_.robot(), input.pose, now);
+    // A gap heard is progress: the drive to its approach point (up to a few metres back along
+    // the wall, then a turn) must not run out the give-up clock the sweep has spent.
+    if (!had_gap && search_.gap_heard()) progress_s_ = now;
     if (s.found) {
       // A gap heard is progress: the passage gets the whole give_up_s (the sweep spent it
       // moving along the wall, not nearer the waypoint).

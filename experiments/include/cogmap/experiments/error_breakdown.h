@@ -69,8 +69,7 @@ struct RoomHeadingError {
 };
 
 /// Empty when no row in [start, end] has ground truth. `rows` are in time order.
-std::optional<RoomHeadingError> room_heading_error(std::span<const TrajectoryRow> rows,
-                                                   const RoomSpan& room);
+std::optional<RoomHeadingError> room_heading_error(TrajectoryView rows, const RoomSpan& room);
 
 /// The heading block: means over rooms with truth; empty optionals when there is none.
 struct HeadingBreakdown {
@@ -80,8 +79,7 @@ struct HeadingBreakdown {
   std::optional<double> within_room_drift_deg_mean_abs;  ///< mean |wrap(exit − entry)|
   std::optional<double> within_room_drift_deg_max_abs;
 };
-HeadingBreakdown heading_breakdown(std::span<const TrajectoryRow> rows,
-                                   std::span<const RoomSpan> rooms);
+HeadingBreakdown heading_breakdown(TrajectoryView rows, std::span<const RoomSpan> rooms);
 
 /// metrics.json `error_breakdown`.
 struct ErrorBreakdown {
@@ -108,7 +106,7 @@ class ErrorBreakdownBuilder {
 
   /// The block, with the heading part from the run's trajectory. Releases the rooms' samples:
   /// call it once, after the last add_room.
-  ErrorBreakdown finish(std::span<const TrajectoryRow> rows);
+  ErrorBreakdown finish(TrajectoryView rows);
 
  private:
   SegmentIndex truth_;

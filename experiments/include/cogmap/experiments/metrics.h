@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "cogmap/experiments/trajectory_rows.h"
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/mapper/seam/pose2.h"
 
@@ -83,14 +84,6 @@ MapAccuracy evaluate_map(std::span<const mapper::Segment> map,
 /// `values` is reordered. Requires a non-empty input.
 double quantile(std::vector<double>& values, double q);
 
-/// One frame of the run, world frame.
-struct TrajectoryRow {
-  double t_s = 0.0;
-  std::optional<mapper::Pose2> truth;  ///< empty on a real robot
-  mapper::Pose2 odometry;              ///< odometry composed with the known start pose
-  mapper::Pose2 estimate;              ///< the mapper's corrected estimate
-};
-
 /// The localization block of metrics.json.
 struct LocalizationAccuracy {
   double heading_error_final_odometry_deg = 0.0;  ///< |wrap(θ_odom − θ_true)| at the last frame
@@ -102,7 +95,7 @@ struct LocalizationAccuracy {
 
 /// Empty when no row has ground truth. Rows without truth are skipped; the final heading
 /// error uses the last row that has truth.
-std::optional<LocalizationAccuracy> evaluate_trajectory(std::span<const TrajectoryRow> rows);
+std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows);
 
 /// Per-room sizes for the memory comparison (thesis Table 4.2).
 struct RoomSize {

@@ -54,10 +54,10 @@ inline constexpr double kContactDistanceM = 0.02;
 
 /// Counts contact episodes (a run of consecutive frames in contact is one) and their time,
 /// from the true poses of `rows` (rows without truth are skipped) against `surfaces`.
-void add_contacts(NavMetrics& nav, std::span<const TrajectoryRow> rows,
-                  std::span<const mapper::Segment> surfaces, const mapper::RobotGeometry& robot);
+void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::Segment> surfaces,
+                  const mapper::RobotGeometry& robot);
 
 /// Odometry path length of `rows`, metres.
-double odometry_distance_m(std::span<const TrajectoryRow> rows);
+double odometry_distance_m(TrajectoryView rows);
 
 }  // namespace cogmap::experiments

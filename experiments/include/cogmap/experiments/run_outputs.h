@@ -16,11 +16,10 @@ namespace cogmap::experiments {
 
 /// trajectory.csv: `t_s,true_x_m,true_y_m,true_theta_rad,odom_x_m,odom_y_m,odom_theta_rad,
 /// est_x_m,est_y_m,est_theta_rad`, one row a frame; true columns empty without ground truth.
-std::string trajectory_csv(std::span<const TrajectoryRow> rows);
+std::string trajectory_csv(TrajectoryView rows);
 /// The same text in pieces of `rows_per_chunk` rows (the header goes with the first), handed
 /// to `emit` as they are made: a long run's file is written without holding it whole.
-void trajectory_csv_chunks(std::span<const TrajectoryRow> rows,
-                           const std::function<void(std::string_view)>& emit,
+void trajectory_csv_chunks(TrajectoryView rows, const std::function<void(std::string_view)>& emit,
                            std::size_t rows_per_chunk = 1024);
 
 /// One control cycle of the controller's own account (nav_trace.csv, `output.nav_trace`).

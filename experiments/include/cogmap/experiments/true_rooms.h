@@ -55,8 +55,7 @@ struct TrueRooms {
 /// checked (doors are 0.9 m or more). Without a finite true position in `rows` (or with no free
 /// cell near it) every enclosed component counts, reachable or not. Never throws: no (finite)
 /// surface gives {0, 0}.
-TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces,
-                           std::span<const TrajectoryRow> rows,
+TrueRooms count_true_rooms(std::span<const mapper::Segment> surfaces, TrajectoryView rows,
                            const TrueRoomsOptions& options = {});
 
 }  // namespace cogmap::experiments
