@@ -93,17 +93,13 @@ std::vector<ErrorPiece> error_pieces(std::span<const Segment> map, const Segment
   return out;
 }
 
-std::optional<RoomHeadingError> room_heading_error(TrajectoryView rows, const RoomSpan& room) {
-  const TrajectoryRow* first = nullptr;
-  const TrajectoryRow* last = nullptr;
-  for (const TrajectoryRow& row : rows) {
-    if (row.t_s < room.start_time_s) continue;
-    if (row.t_s > room.end_time_s) break;
-    if (!row.truth) continue;
-    if (first == nullptr) first = &row;
-    last = &row;
-  }
-  if (first == nullptr) return std::nullopt;
+namespace {
+
+// The room's errors from the first and the last row with a true pose within its span.
+std::optional<RoomHeadingError> heading_error_of(const std::optional<TrajectoryRow>& first,
+                                                 const std::optional<TrajectoryRow>& last,
+                                                 const RoomSpan& room) {
+  if (!first) return std::nullopt;
   // The first row is the boundary frame the room shares with its parent: its estimate is already
   // in this room's frame (the parent's correction applied). So is every row up to the last,
   // which carries this room's correction too when the room ended inside that frame.
@@ -112,10 +108,38 @@ std::optional<RoomHeadingError> room_heading_error(TrajectoryView rows, const Ro
                           heading_error_deg(*last, last_corrected ? 0.0 : room.room_to_world_rad)};
 }
 
+}  // namespace
+
+std::optional<RoomHeadingError> room_heading_error(TrajectoryView rows, const RoomSpan& room) {
+  // Copies: a row is valid only until the next one is read.
+  std::optional<TrajectoryRow> first;
+  std::optional<TrajectoryRow> last;
+  for (const TrajectoryRow& row : rows) {
+    if (row.t_s < room.start_time_s) continue;
+    if (row.t_s > room.end_time_s) break;
+    if (!row.truth) continue;
+    if (!first) first = row;
+    last = row;
+  }
+  return heading_error_of(first, last, room);
+}
+
 HeadingBreakdown heading_breakdown(TrajectoryView rows, std::span<const RoomSpan> rooms) {
+  // One pass over the rows for all rooms (a long run's rows are read back from disk): the rows
+  // are in time order, so each room's first and last row with a true pose within its span are
+  // those room_heading_error finds.
+  std::vector<std::optional<TrajectoryRow>> first(rooms.size()), last(rooms.size());
+  for (const TrajectoryRow& row : rows) {
+    if (!row.truth) continue;
+    for (std::size_t k = 0; k < rooms.size(); ++k) {
+      if (row.t_s < rooms[k].start_time_s || row.t_s > rooms[k].end_time_s) continue;
+      if (!first[k]) first[k] = row;
+      last[k] = row;
+    }
+  }
   std::vector<double> entry, exit, drift;
-  for (const RoomSpan& room : rooms) {
-    const std::optional<RoomHeadingError> e = room_heading_error(rows, room);
+  for (std::size_t k = 0; k < rooms.size(); ++k) {
+    const std::optional<RoomHeadingError> e = heading_error_of(first[k], last[k], rooms[k]);
     if (!e) continue;
     entry.push_back(std::abs(e->entry_deg));
     exit.push_back(std::abs(e->exit_deg));

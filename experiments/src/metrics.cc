@@ -135,15 +135,15 @@ MapAccuracy evaluate_map(std::span<const Segment> map, std::span<const Segment> 
 std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows) {
   LocalizationAccuracy out;
   double sum_odom = 0.0, sum_est = 0.0;
-  const TrajectoryRow* last = nullptr;
+  std::optional<TrajectoryRow> last;  // a copy: a row is valid only until the next one is read
   for (const TrajectoryRow& r : rows) {
     if (!r.truth) continue;
     sum_odom += (r.odometry.translation() - r.truth->translation()).squaredNorm();
     sum_est += (r.estimate.translation() - r.truth->translation()).squaredNorm();
     ++out.frames;
-    last = &r;
+    last = r;
   }
-  if (last == nullptr) return std::nullopt;
+  if (!last) return std::nullopt;
   const double n = static_cast<double>(out.frames);
   out.ate_rmse_odometry_m = std::sqrt(sum_odom / n);
   out.ate_rmse_corrected_m = std::sqrt(sum_est / n);

@@ -87,10 +87,10 @@ void add_mode_interval(NavMetrics& nav, const std::string& mode, double dtheta_r
 
 double odometry_distance_m(TrajectoryView rows) {
   double d = 0.0;
-  const TrajectoryRow* previous = nullptr;
+  std::optional<mapper::Point2> previous;  // a row is valid only until the next one is read
   for (const TrajectoryRow& row : rows) {
-    if (previous) d += (row.odometry.translation() - previous->odometry.translation()).norm();
-    previous = &row;
+    if (previous) d += (row.odometry.translation() - *previous).norm();
+    previous = row.odometry.translation();
   }
   return d;
 }

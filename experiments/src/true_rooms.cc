@@ -155,14 +155,14 @@ Raster make_raster(std::span<const mapper::Segment> surfaces, const TrueRoomsOpt
 /// no row has a finite true position, or no free cell is near it.
 std::optional<std::size_t> start_cell(const Raster& r, TrajectoryView rows,
                                       const std::vector<float>& d2, double h) {
-  const TrajectoryRow* first = nullptr;
+  std::optional<TrajectoryRow> first;  // a copy: a row is valid only while it is being read
   for (const TrajectoryRow& row : rows) {
     if (row.truth && std::isfinite(row.truth->x_m) && std::isfinite(row.truth->y_m)) {
-      first = &row;
+      first = row;
       break;
     }
   }
-  if (first == nullptr) return std::nullopt;
+  if (!first) return std::nullopt;
   const auto clamp_index = [](double v, std::size_t n) {
     return static_cast<std::ptrdiff_t>(
         std::clamp(std::floor(v), 0.0, static_cast<double>(n) - 1.0));

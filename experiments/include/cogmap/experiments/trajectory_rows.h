@@ -1,13 +1,18 @@
 #pragma once
-/// The frames of a run as the metrics read them: one row per frame, kept in fixed-size chunks
-/// while the run grows (TrajectoryLog) and read as one sequence (TrajectoryView).
+/// The frames of a run as the metrics read them: one row per frame, appended while the run goes
+/// (TrajectoryLog) and read afterwards as one sequence (TrajectoryView).
 ///
-/// Why chunks: a vector doubling its capacity holds up to twice the rows it needs and, while it
-/// moves them, three times; for a 36-room block (9,700 frames of 88 bytes) that slack was the
-/// largest piece of the peak memory that grows with the run (docs/performance.md, "Growth").
+/// Why not one vector: a run's rows grow with its length, not with its rooms (88 bytes a frame,
+/// 0.9 MB for a 1 000 s drive, 3 MB an hour), and a doubling vector holds up to twice that. The
+/// log keeps only the chunk being filled in memory and writes every full one to an unnamed
+/// temporary file, from which the view reads it back a chunk at a time, so the peak memory of a
+/// run does not grow with its length (docs/performance.md, "Growth").
 
 #include <cstddef>
+#include <cstdint>
+#include <cstdio>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -24,94 +29,116 @@ struct TrajectoryRow {
   mapper::Pose2 estimate;              ///< the mapper's corrected estimate
 };
 
-/// Read-only rows in frame order, made of one or more contiguous pieces. It does not own the
-/// rows: the log or vector it was made from must outlive it and not grow meanwhile.
+/// Read-only rows in frame order, made of pieces held in memory or in a TrajectoryLog's spill
+/// file. It does not own the rows: what it was made from must outlive it and not grow
+/// meanwhile. A row read through an iterator stays valid only until that iterator advances
+/// (a spilled piece is read into a buffer of the iterator's): copy what must outlive the step.
+/// Several iterators may read at once, from several threads.
 class TrajectoryView {
+  struct Piece {
+    std::span<const TrajectoryRow> rows;  ///< in memory; empty when spilled
+    std::int64_t file_offset = -1;        ///< spilled: where its rows start in the file
+    std::size_t count = 0;                ///< its number of rows (never 0)
+  };
+
  public:
   class Iterator {
    public:
-    using iterator_category = std::forward_iterator_tag;
+    using iterator_category = std::input_iterator_tag;
     using value_type = TrajectoryRow;
     using difference_type = std::ptrdiff_t;
     using pointer = const TrajectoryRow*;
     using reference = const TrajectoryRow&;
 
     Iterator() = default;
-    reference operator*() const { return (*piece_)[row_]; }
-    pointer operator->() const { return &(*piece_)[row_]; }
-    Iterator& operator++() {
-      if (++row_ == piece_->size()) {  // pieces are never empty
-        ++piece_;
-        row_ = 0;
-      }
-      return *this;
-    }
+    reference operator*() const { return rows_[row_]; }
+    pointer operator->() const { return &rows_[row_]; }
+    Iterator& operator++();
     Iterator operator++(int) {
       Iterator before = *this;
       ++*this;
       return before;
     }
-    bool operator==(const Iterator& other) const = default;
+    bool operator==(const Iterator& other) const {
+      return piece_ == other.piece_ && row_ == other.row_;
+    }
 
    private:
     friend class TrajectoryView;
-    Iterator(const std::span<const TrajectoryRow>* piece, std::size_t row)
-        : piece_(piece), row_(row) {}
-    const std::span<const TrajectoryRow>* piece_ = nullptr;
+    Iterator(const TrajectoryView* view, std::size_t piece);
+    void load();  // rows_ for piece_ (read back from the file when spilled)
+
+    const TrajectoryView* view_ = nullptr;
+    std::size_t piece_ = 0;
     std::size_t row_ = 0;
+    std::span<const TrajectoryRow> rows_;
+    std::shared_ptr<const std::vector<TrajectoryRow>> buffer_;  // a spilled piece, read back
   };
 
   TrajectoryView() = default;
-  /// One contiguous piece (implicit, so a vector of rows reads as a view).
+  /// One piece in memory (implicit, so a vector of rows reads as a view).
   TrajectoryView(std::span<const TrajectoryRow> rows) {  // NOLINT(google-explicit-constructor)
-    add(rows);
+    add_memory(rows);
   }
   TrajectoryView(const std::vector<TrajectoryRow>& rows)  // NOLINT(google-explicit-constructor)
       : TrajectoryView(std::span<const TrajectoryRow>(rows)) {}
-  /// The pieces in order; empty ones are skipped.
+  /// Pieces in memory, in order; empty ones are skipped.
   explicit TrajectoryView(std::span<const std::span<const TrajectoryRow>> pieces) {
-    for (const auto& piece : pieces) add(piece);
+    for (const auto& piece : pieces) add_memory(piece);
   }
 
-  Iterator begin() const { return {pieces_.data(), 0}; }
-  Iterator end() const { return {pieces_.data() + pieces_.size(), 0}; }
+  Iterator begin() const { return Iterator(this, 0); }
+  Iterator end() const { return Iterator(this, pieces_.size()); }
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
 
  private:
-  void add(std::span<const TrajectoryRow> piece) {
+  friend class TrajectoryLog;
+  void add_memory(std::span<const TrajectoryRow> piece) {
     if (piece.empty()) return;
-    pieces_.push_back(piece);
+    pieces_.push_back({piece, -1, piece.size()});
     size_ += piece.size();
   }
 
-  std::vector<std::span<const TrajectoryRow>> pieces_;
+  int fd_ = -1;  // the spill file (pread: safe from several threads at once)
+  std::vector<Piece> pieces_;
   std::size_t size_ = 0;
 };
 
-/// The rows of a run as it goes, appended one frame at a time; rows never move once added.
+/// The rows of a run as it goes, appended one frame at a time.
 class TrajectoryLog {
  public:
-  /// 1024 rows (90 kB) a chunk: below glibc's mmap threshold, and a 10,000-frame run needs ten.
+  /// 1024 rows (90 kB) a chunk: one write per ~100 s of a run at 10 Hz.
   static constexpr std::size_t kRowsPerChunk = 1024;
 
-  void push_back(const TrajectoryRow& row) {
-    if (chunks_.empty() || chunks_.back().size() == kRowsPerChunk) {
-      chunks_.emplace_back().reserve(kRowsPerChunk);
-    }
-    chunks_.back().push_back(row);
-    ++size_;
-  }
+  /// `spill`: full chunks go to an unnamed temporary file (std::tmpfile, gone when the log is);
+  /// when none can be made, or a write fails, the chunks stay in memory instead.
+  explicit TrajectoryLog(bool spill = true);
+  TrajectoryLog(const TrajectoryLog&) = delete;
+  TrajectoryLog& operator=(const TrajectoryLog&) = delete;
+  TrajectoryLog(TrajectoryLog&&) noexcept = default;
+  TrajectoryLog& operator=(TrajectoryLog&&) noexcept = default;
+  ~TrajectoryLog() = default;
+
+  void push_back(const TrajectoryRow& row);
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
+  /// How many rows are in the spill file (the rest are in memory).
+  std::size_t spilled_rows() const { return spilled_chunks_ * kRowsPerChunk; }
   /// Valid until the next push_back.
-  TrajectoryView view() const {
-    std::vector<std::span<const TrajectoryRow>> pieces(chunks_.begin(), chunks_.end());
-    return TrajectoryView(pieces);
-  }
+  TrajectoryView view() const;
 
  private:
-  std::vector<std::vector<TrajectoryRow>> chunks_;  // each reserved to kRowsPerChunk
+  struct CloseFile {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  void spill_current();
+
+  std::unique_ptr<std::FILE, CloseFile> file_;    // null: everything stays in memory
+  bool spilling_ = false;                         // ...and false too once a write has failed
+  std::size_t spilled_chunks_ = 0;                // the file's chunks: the run's first ones
+  std::vector<std::vector<TrajectoryRow>> kept_;  // full chunks in memory (after the file's)
+  std::vector<TrajectoryRow> current_;            // the chunk being filled
   std::size_t size_ = 0;
 };
 
