@@ -16,37 +16,66 @@ namespace {
 constexpr double kLogSqrt2Pi = 0.91893853320467274178;  // log √(2π)
 constexpr double kNegInf = -std::numeric_limits<double>::infinity();
 
+/// The per-iteration constants of the E-step: log π_k and log σ_k of both Gaussians and the
+/// clutter term, computed once per mixture instead of once per sample (the same doubles).
+struct LogTerms {
+  double log_pi_s, log_sigma_s, log_pi_m, log_sigma_m, clutter;
+  bool has_s, has_m;
+
+  LogTerms(const GaussianMixture2& g, double log_clutter_density)
+      : log_pi_s(g.pi_s <= 0.0 ? 0.0 : std::log(g.pi_s)),
+        log_sigma_s(std::log(g.sigma_s)),
+        log_pi_m(g.pi_m <= 0.0 ? 0.0 : std::log(g.pi_m)),
+        log_sigma_m(std::log(g.sigma_m)),
+        clutter(g.pi_clutter > 0.0 ? std::log(g.pi_clutter) + log_clutter_density : kNegInf),
+        has_s(!(g.pi_s <= 0.0)),
+        has_m(!(g.pi_m <= 0.0)) {}
+};
+
 /// log(π_k p(x | μ_k, σ_k²)) with Eq. 3.16 as the density (the appendix's "√(2πσ)" is a typo
 /// for √(2π) σ, which Eq. 3.16 prints correctly).
-double log_weighted_gauss(double x, double pi, double mu, double sigma) {
-  if (pi <= 0.0) return kNegInf;
+double log_weighted_gauss(double x, bool has, double log_pi, double mu, double sigma,
+                          double log_sigma) {
+  if (!has) return kNegInf;
   const double z = (x - mu) / sigma;
-  return std::log(pi) - 0.5 * z * z - std::log(sigma) - kLogSqrt2Pi;
+  return log_pi - 0.5 * z * z - log_sigma - kLogSqrt2Pi;
 }
 
-/// E-step for one sample (Eq. 3.14): responsibilities ⟨q^s⟩, ⟨q^m⟩, ⟨q^clutter⟩ and
-/// log p(x). Computed in the log domain so far samples do not underflow to 0/0.
+/// exp(d) for d = log_term − top ≤ 0: exactly 1 at the top and 0 for an absent component, which
+/// is what std::exp returns there; only the other terms need the call.
+double exp_offset(double d) {
+  if (d == 0.0) return 1.0;
+  if (d == kNegInf) return 0.0;
+  return std::exp(d);
+}
+
+/// E-step for one sample (Eq. 3.14): responsibilities ⟨q^s⟩, ⟨q^m⟩, ⟨q^clutter⟩ and, when
+/// asked for, log p(x). Computed in the log domain so far samples do not underflow to 0/0.
 struct Responsibility {
   std::array<double, 3> q{0.0, 0.0, 0.0};
   double log_p = 0.0;
 };
 
-Responsibility e_step(double x, EmSource source, const GaussianMixture2& g,
-                      double log_clutter_density) {
+Responsibility e_step(double x, EmSource source, const GaussianMixture2& g, const LogTerms& t,
+                      bool with_log_p) {
   const std::array<double, 3> log_terms{
-      source == EmSource::kM ? kNegInf : log_weighted_gauss(x, g.pi_s, g.mu_s, g.sigma_s),
-      source == EmSource::kS ? kNegInf : log_weighted_gauss(x, g.pi_m, g.mu_m, g.sigma_m),
-      g.pi_clutter > 0.0 ? std::log(g.pi_clutter) + log_clutter_density : kNegInf};
+      source == EmSource::kM
+          ? kNegInf
+          : log_weighted_gauss(x, t.has_s, t.log_pi_s, g.mu_s, g.sigma_s, t.log_sigma_s),
+      source == EmSource::kS
+          ? kNegInf
+          : log_weighted_gauss(x, t.has_m, t.log_pi_m, g.mu_m, g.sigma_m, t.log_sigma_m),
+      t.clutter};
   const double top = *std::max_element(log_terms.begin(), log_terms.end());
   Responsibility r;
   if (top == kNegInf) return r;  // every component has zero weight: no information
   double sum = 0.0;
   for (int k = 0; k < 3; ++k) {
-    r.q[k] = std::exp(log_terms[k] - top);
+    r.q[k] = exp_offset(log_terms[k] - top);
     sum += r.q[k];
   }
   for (double& q : r.q) q /= sum;
-  r.log_p = top + std::log(sum);
+  if (with_log_p) r.log_p = top + std::log(sum);
   return r;
 }
 
@@ -58,9 +87,9 @@ double log_likelihood(std::span<const double> x, std::span<const double> w,
                       std::span<const EmSource> sources, const GaussianMixture2& g,
                       double log_clutter_density) {
   double ll = 0.0;
+  const LogTerms t(g, log_clutter_density);
   for (std::size_t i = 0; i < x.size(); ++i) {
-    ll += (w.empty() ? 1.0 : w[i]) *
-          e_step(x[i], source_of(sources, i), g, log_clutter_density).log_p;
+    ll += (w.empty() ? 1.0 : w[i]) * e_step(x[i], source_of(sources, i), g, t, true).log_p;
   }
   return ll;
 }
@@ -103,9 +132,10 @@ EmResult expectation_maximization(std::span<const double> samples, std::span<con
     // E-step (Eq. 3.14) and the sums the M-step needs (Σ w⟨q⟩, Σ w⟨q⟩x), in one pass.
     std::array<double, 3> sum_q{0.0, 0.0, 0.0};
     std::array<double, 2> sum_qx{0.0, 0.0};
+    const LogTerms t(g, log_clutter_density);
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const double w = weights.empty() ? 1.0 : weights[i];
-      q[i] = e_step(samples[i], source_of(sources, i), g, log_clutter_density).q;
+      q[i] = e_step(samples[i], source_of(sources, i), g, t, false).q;
       for (int k = 0; k < 3; ++k) sum_q[k] += w * q[i][k];
       sum_qx[0] += w * q[i][0] * samples[i];
       sum_qx[1] += w * q[i][1] * samples[i];
