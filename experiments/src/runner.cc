@@ -67,7 +67,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       o.time_budget_s = c.explore_time_budget_s;
       o.distance_budget_m = c.explore_distance_budget_m;
       if (c.door_search) {
-        o.door_search_per_waypoint =
+        o.door.search_per_waypoint =
             *c.door_search ? mapper::nav::DoorOptions{}.search_per_waypoint : 0;
       }
       return mapper::nav::make_explorer(o);

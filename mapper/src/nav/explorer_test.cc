@@ -23,6 +23,19 @@ ExploreOptions heading_options() {
   return o;
 }
 
+// One knob for the door search: the route follower sweeps (2 per waypoint), the explorer, whose
+// door behaviour is the same DoorOptions, does not unless told to (docs/algorithms.md, "Door
+// search"); everything else of the door behaviour is the route follower's.
+TEST(ExploreOptions, TheDoorBehaviourIsTheRouteFollowersWithoutTheSweep) {
+  const DoorOptions route = RouteOptions{}.door;
+  const DoorOptions explore = ExploreOptions{}.door;
+  EXPECT_EQ(route.search_per_waypoint, 2);
+  EXPECT_EQ(explore.search_per_waypoint, 0);
+  EXPECT_EQ(explore.enabled, route.enabled);
+  EXPECT_EQ(explore.speed_mps, route.speed_mps);
+  EXPECT_EQ(explore.search_timeout_s, route.search_timeout_s);
+}
+
 VelocityCommand step(Controller& c, const GridUpdater& grid, int i, const Pose2& pose) {
   static const RobotGeometry kRobot = p2at_geometry();
   SensorFrame f = frame_at(i);

@@ -29,7 +29,6 @@ RouteOptions route_options(const ExploreOptions& o) {
   r.safety = o.safety;
   r.recovery = o.recovery;
   r.door = o.door;
-  r.door.search_per_waypoint = o.door_search_per_waypoint;
   r.give_up_s = o.give_up_s;
   r.progress_m = o.progress_m;
   return r;

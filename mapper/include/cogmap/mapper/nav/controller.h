@@ -424,17 +424,24 @@ struct EdgeOptions {
   double min_loop_m = 10.0;         ///< ...after at least this much travel
 };
 
+/// DoorOptions with the door search off (the explorer's default).
+inline DoorOptions without_door_search() {
+  DoorOptions o;
+  o.search_per_waypoint = 0;
+  return o;
+}
+
 struct ExploreOptions {
   ExploreStrategy strategy = ExploreStrategy::kFrontier;
   EdgeOptions edge;
   ExploreMapOptions map;
   FrontierOptions frontier;
-  DoorOptions door;  ///< the route follower's door behaviour, used on the way
-  /// Sweeping a wall for its door (DoorOptions::search_per_waypoint) on the way to a frontier:
-  /// off. Measured on the 4 shipped and 12 generated explorations, seeds 1-3 (docs/algorithms.md,
-  /// "Door search"): explorations completed 30 -> 29 of 51, rooms 253 -> 251 of 345, median
-  /// wall error 0.226 -> 0.238 m; a frontier behind a wall is replaced by another one sooner.
-  int door_search_per_waypoint = 0;
+  /// The route follower's door behaviour, used on the way, with one default of its own: no
+  /// sweep along a wall for its door (`search_per_waypoint` 0). Measured on the 4 shipped and
+  /// 12 generated explorations, seeds 1-3 (docs/algorithms.md, "Door search"): with sweeps,
+  /// explorations completed 30 -> 29 of 51, rooms 253 -> 251 of 345, median wall error 0.226 ->
+  /// 0.238 m; a frontier behind a wall is replaced by another one sooner than a sweep finds it.
+  DoorOptions door = without_door_search();
   double waypoint_tolerance_m = 0.4;  ///< as RouteOptions
   double give_up_s = 45.0;            ///< no new cells seen and no progress_m nearer the goal for
                                       ///< this long: the goal is given up (a 7 m leg takes 14 s,
