@@ -98,7 +98,7 @@ mapper::SensorFrame without_truth(const mapper::SensorFrame& frame) {
 
 /// The frame loop and its products, kept apart from the writing of files.
 struct SessionResult {
-  TrajectoryLog rows;                 // chunked: no doubling slack as a long run grows
+  TrajectoryLog rows;                 // full chunks on disk: memory does not grow with the run
   std::vector<NavTraceRow> nav_rows;  // output.nav_trace only
   std::optional<bool> route_completed;
   double sim_time_s = 0.0;

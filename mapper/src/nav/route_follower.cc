@@ -131,8 +131,7 @@ class RouteFollower final : public ReroutableFollower {
     // the wall, then a turn) must not run out the give-up clock the sweep has spent.
     if (!had_gap && search_.gap_heard()) progress_s_ = now;
     if (s.found) {
-      // A gap heard is progress: the passage gets the whole give_up_s (the sweep spent it
-      // moving along the wall, not nearer the waypoint).
+      // Handed over: the passage gets the whole give_up_s too.
       progress_s_ = now;
       door_.start(*s.found, now, false);
       return door_step(input, door_goal(input.pose.translation()));
