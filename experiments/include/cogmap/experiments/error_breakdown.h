@@ -79,6 +79,8 @@ struct HeadingBreakdown {
   std::optional<double> within_room_drift_deg_mean_abs;  ///< mean |wrap(exit − entry)|
   std::optional<double> within_room_drift_deg_max_abs;
 };
+/// Each room's errors as room_heading_error gives them, from one pass over `rows` (in time
+/// order) for all rooms.
 HeadingBreakdown heading_breakdown(TrajectoryView rows, std::span<const RoomSpan> rooms);
 
 /// metrics.json `error_breakdown`.
