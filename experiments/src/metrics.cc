@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "cogmap/experiments/segment_index.h"
@@ -58,36 +59,57 @@ std::vector<Point2> subsample_path(std::span<const Point2> path, double step_m) 
   return sampler.path();
 }
 
-std::vector<Point2> visible_truth_samples(std::span<const Segment> truth,
-                                          std::span<const Point2> true_path,
-                                          const MapMetricsOptions& options) {
-  const SegmentIndex index(truth, options.index_cell_m);
-  const std::vector<Point2> poses = subsample_path(true_path, options.trajectory_step_m);
+void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& index,
+                          std::span<const Point2> poses, const MapMetricsOptions& options,
+                          std::vector<std::uint8_t>& seen) {
   const double range2 = options.sonar_max_range_m * options.sonar_max_range_m;
   // The sight line stops just short of the sample: a neighbouring surface that shares the
   // sample's corner would otherwise "block" it.
   constexpr double kEndGap_m = 0.01;
   // Samples are visited, not stored: a large building's samples would otherwise sit in
-  // memory twice (all of them, and the visible ones).
-  std::vector<Point2> visible;
+  // memory (one flag each is kept instead).
+  std::size_t k = 0;
   for_each_sample(truth, options.sample_step_m, [&](const SurfaceSample& s) {
+    const std::size_t i = k++;
+    if (i >= seen.size()) seen.resize(i + 1, 0);
+    if (seen[i]) return;
     for (const Point2& pose : poses) {
       const Point2 d = pose - s.point;
       const double dist2 = d.squaredNorm();
       if (dist2 > range2) continue;
       const double dist = std::sqrt(dist2);
       if (dist <= kEndGap_m) {
-        visible.push_back(s.point);
+        seen[i] = 1;
         return;
       }
       const Point2 near_sample = s.point + d * (kEndGap_m / dist);
       if (!index.blocked(near_sample, pose, s.segment)) {
-        visible.push_back(s.point);
+        seen[i] = 1;
         return;
       }
     }
   });
-  return visible;
+}
+
+std::vector<Point2> marked_samples(std::span<const Segment> truth, double sample_step_m,
+                                   std::span<const std::uint8_t> seen) {
+  std::vector<Point2> out;
+  std::size_t k = 0;
+  for_each_sample(truth, sample_step_m, [&](const SurfaceSample& s) {
+    if (k < seen.size() && seen[k]) out.push_back(s.point);
+    ++k;
+  });
+  return out;
+}
+
+std::vector<Point2> visible_truth_samples(std::span<const Segment> truth,
+                                          std::span<const Point2> true_path,
+                                          const MapMetricsOptions& options) {
+  const SegmentIndex index(truth, options.index_cell_m);
+  const std::vector<Point2> poses = subsample_path(true_path, options.trajectory_step_m);
+  std::vector<std::uint8_t> seen;
+  mark_visible_samples(truth, index, poses, options, seen);
+  return marked_samples(truth, options.sample_step_m, seen);
 }
 
 double quantile(std::vector<double>& values, double q) {

@@ -14,6 +14,7 @@
 #include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/run_outputs.h"
 #include "cogmap/experiments/true_rooms.h"
+#include "cogmap/experiments/visible_truth_tracker.h"
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/mapper/io/directory_asr_store.h"
 #include "cogmap/mapper/mapper.h"
@@ -235,6 +236,13 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   NavMetrics turning;      // odometry turning by commanding mode (nav block)
   std::string mode = mapper::nav::to_string(mapper::nav::NavMode::kIdle);
   std::optional<mapper::Pose2> last_odometry;
+  // Which true surfaces the robot could have sensed (the coverage's denominator) depends only
+  // on the truth and the true path, and is the largest piece of the metrics (7 % of a nine-room
+  // run's instructions): a worker works it out on the second core while the run goes.
+  MapMetricsOptions metric_options;
+  metric_options.sonar_max_range_m = geometry.sonar_max_range_m;
+  std::optional<VisibleTruthTracker> visible_truth;
+  if (truth) visible_truth.emplace(truth->surfaces, metric_options);
   const auto wall_start = Clock::now();
   try {
     double next_progress_s = 0.0;
@@ -253,6 +261,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       last_odometry = odometry;
       last_time_s = seen.time_s;
       session.rows.push_back({frame->time_s, frame->true_pose, odometry, mapper.pose_estimate()});
+      if (visible_truth && frame->true_pose) visible_truth->add(frame->true_pose->translation());
       session.sim_time_s = frame->time_s;
       if (options.on_progress && frame->time_s >= next_progress_s) {
         options.on_progress(frame->time_s, experiment.duration_s);
@@ -319,24 +328,6 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.localization_time_s = stats.localization_time_s;
   m.room_cpu_s = room_cpu_s;
 
-  // Which true surfaces the robot could have sensed (the coverage's denominator) depends only
-  // on the truth and the true path, and is the largest piece of the metrics (7 % of a nine-room
-  // run's instructions): it runs on a second thread while the maps are merged, the rooms read
-  // back and the files written. Same result either way (a pure function, no random draws).
-  MapMetricsOptions metric_options;
-  metric_options.sonar_max_range_m = geometry.sonar_max_range_m;
-  std::future<std::vector<mapper::Point2>> visible_later;
-  if (truth) {
-    visible_later = std::async(std::launch::async, [&truth, &session, mo = metric_options] {
-      // visible_truth_samples subsamples the path by the same step; doing it here first gives
-      // the same poses without holding the whole path.
-      PathSubsampler path(mo.trajectory_step_m);
-      for (const TrajectoryRow& r : session.rows.view()) {
-        if (r.truth) path.add(r.truth->translation());
-      }
-      return visible_truth_samples(truth->surfaces, path.path(), mo);
-    });
-  }
   try {
     const auto corrected = mapper.master_map(true);
     const auto odometry = mapper.master_map(false);
@@ -403,10 +394,13 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                labels};
     mapper::io::write_file_atomic(out / "map.svg", map_svg(svg), durability);
     if (truth) {
-      const std::vector<mapper::Point2> visible = visible_later.get();
+      const std::vector<mapper::Point2> visible = visible_truth->finish();
+      // The two maps are scored on the two cores (pure functions: the same result either way).
+      auto odometry_score = std::async(std::launch::async, [&] {
+        return evaluate_map(segments_of(odometry), truth->surfaces, visible, metric_options);
+      });
       m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, metric_options);
-      m.map_odometry =
-          evaluate_map(segments_of(odometry), truth->surfaces, visible, metric_options);
+      m.map_odometry = odometry_score.get();
     }
 
     if (figures) {

@@ -3,6 +3,7 @@
 /// only the known start pose (no alignment, no fitting).
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -60,6 +61,21 @@ class PathSubsampler {
 std::vector<mapper::Point2> visible_truth_samples(std::span<const mapper::Segment> truth,
                                                   std::span<const mapper::Point2> true_path,
                                                   const MapMetricsOptions& options);
+
+class SegmentIndex;
+
+/// The test of visible_truth_samples in pieces: sets `seen[k]` for every sample k (in
+/// sample_segments order) of `truth` that one of `poses` sees (`index` built over `truth`).
+/// Samples already set are not tested again, so the poses can come in batches, in any order;
+/// `seen` grows to the sample count.
+void mark_visible_samples(std::span<const mapper::Segment> truth, const SegmentIndex& index,
+                          std::span<const mapper::Point2> poses, const MapMetricsOptions& options,
+                          std::vector<std::uint8_t>& seen);
+
+/// The points of the samples of `truth` marked in `seen`, in sample_segments order.
+std::vector<mapper::Point2> marked_samples(std::span<const mapper::Segment> truth,
+                                           double sample_step_m,
+                                           std::span<const std::uint8_t> seen);
 
 /// The map block of metrics.json for one map (empty optionals: undefined, written as null).
 struct MapAccuracy {
