@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 
 #include "cogmap/experiments/segment_index.h"
@@ -68,11 +69,24 @@ void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& in
   constexpr double kEndGap_m = 0.01;
   // Samples are visited, not stored: a large building's samples would otherwise sit in
   // memory (one flag each is kept instead).
+  // A sample farther than the range from the poses' bounding box along x or y is out of range
+  // of every pose: skipped untested (the margin keeps the skip on the safe side of rounding).
+  Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity());
+  Point2 hi = -lo;
+  for (const Point2& pose : poses) {
+    lo = lo.cwiseMin(pose);
+    hi = hi.cwiseMax(pose);
+  }
+  const double reach = options.sonar_max_range_m + 1e-6;
   std::size_t k = 0;
   for_each_sample(truth, options.sample_step_m, [&](const SurfaceSample& s) {
     const std::size_t i = k++;
     if (i >= seen.size()) seen.resize(i + 1, 0);
     if (seen[i]) return;
+    if (s.point.x() < lo.x() - reach || s.point.x() > hi.x() + reach ||
+        s.point.y() < lo.y() - reach || s.point.y() > hi.y() + reach) {
+      return;
+    }
     for (const Point2& pose : poses) {
       const Point2 d = pose - s.point;
       const double dist2 = d.squaredNorm();

@@ -329,12 +329,15 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.room_cpu_s = room_cpu_s;
 
   try {
-    const auto corrected = mapper.master_map(true);
-    const auto odometry = mapper.master_map(false);
+    // The master maps (Fig. 4.4), corrected and odometry only, and the room reports, from one
+    // read of each room: one room at a time, so memory stays bounded.
+    std::vector<mapper::Mapper::MapSegment> corrected, odometry;
     std::vector<RoomSize> sizes;
     std::vector<std::pair<int, mapper::Point2>> labels;
     for (const int id : store.ids()) {
-      const mapper::Asr asr = store.load(id);  // one room at a time: memory stays bounded
+      const mapper::Asr asr = store.load(id);
+      mapper::Mapper::append_room_segments(asr, true, corrected);
+      mapper::Mapper::append_room_segments(asr, false, odometry);
       RoomReport r;
       r.size = {asr.id,
                 asr.walls.size(),

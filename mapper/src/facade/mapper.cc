@@ -330,12 +330,13 @@ const AsrGraph& Mapper::graph() const { return impl_->graph; }
 const AsrStore& Mapper::store() const { return impl_->store; }
 const MapperStats& Mapper::stats() const { return impl_->stats; }
 
+void Mapper::append_room_segments(const Asr& asr, bool corrected, std::vector<MapSegment>& map) {
+  for (const Segment& s : asr.world_segments(corrected)) map.push_back({asr.id, s});
+}
+
 std::vector<Mapper::MapSegment> Mapper::master_map(bool corrected) const {
   std::vector<MapSegment> out;
-  for (int id : impl_->store.ids()) {
-    const Asr asr = impl_->store.load(id);
-    for (const Segment& s : asr.world_segments(corrected)) out.push_back({id, s});
-  }
+  for (int id : impl_->store.ids()) append_room_segments(impl_->store.load(id), corrected, out);
   return out;
 }
 

@@ -92,6 +92,9 @@ class Mapper {
     Segment segment;
   };
   std::vector<MapSegment> master_map(bool corrected) const;
+  /// One room's part of the master map, appended to `map` (what master_map does per room; a
+  /// caller that reads the rooms back anyway builds both maps in that one pass).
+  static void append_room_segments(const Asr& asr, bool corrected, std::vector<MapSegment>& map);
 
  private:
   struct Impl;
