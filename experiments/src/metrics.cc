@@ -43,14 +43,21 @@ std::vector<SurfaceSample> sample_segments(std::span<const Segment> segments, do
   return out;
 }
 
-void PathSubsampler::add(const Point2& p) {
-  if (kept_.empty() || (p - kept_.back()).norm() >= step_m_) kept_.push_back(p);
+bool PathSubsampler::add(const Point2& p) {
   last_ = p;
+  if (!kept_.empty() && (p - kept_.back()).norm() < step_m_) return false;
+  kept_.push_back(p);
+  return true;
+}
+
+std::optional<Point2> PathSubsampler::unkept_last() const {
+  if (last_ && (*last_ - kept_.back()).norm() > 0.0) return last_;
+  return std::nullopt;
 }
 
 std::vector<Point2> PathSubsampler::path() const {
   std::vector<Point2> out = kept_;
-  if (last_ && (*last_ - out.back()).norm() > 0.0) out.push_back(*last_);
+  if (const auto tail = unkept_last()) out.push_back(*tail);
   return out;
 }
 
@@ -67,10 +74,10 @@ void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& in
   // The sight line stops just short of the sample: a neighbouring surface that shares the
   // sample's corner would otherwise "block" it.
   constexpr double kEndGap_m = 0.01;
-  // Samples are visited, not stored: a large building's samples would otherwise sit in
-  // memory (one flag each is kept instead).
-  // A sample farther than the range from the poses' bounding box along x or y is out of range
-  // of every pose: skipped untested (the margin keeps the skip on the safe side of rounding).
+  // Samples are visited, not stored (one flag each is kept): a large building's samples would
+  // otherwise sit in memory. A sample farther than the range from the poses' bounding box along
+  // x or y is out of range of every pose: skipped untested (the margin keeps the skip on the
+  // safe side of rounding).
   Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity());
   Point2 hi = -lo;
   for (const Point2& pose : poses) {

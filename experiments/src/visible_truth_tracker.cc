@@ -15,7 +15,10 @@ constexpr std::size_t kBatchPositions = 64;
 
 VisibleTruthTracker::VisibleTruthTracker(std::span<const mapper::Segment> truth,
                                          const MapMetricsOptions& options)
-    : truth_(truth), options_(options), worker_([this] { work(); }) {}
+    : truth_(truth),
+      options_(options),
+      path_(options.trajectory_step_m),
+      worker_([this] { work(); }) {}
 
 VisibleTruthTracker::~VisibleTruthTracker() {
   {
@@ -28,11 +31,7 @@ VisibleTruthTracker::~VisibleTruthTracker() {
 }
 
 void VisibleTruthTracker::add(const mapper::Point2& p) {
-  if (!last_kept_ || (p - *last_kept_).norm() >= options_.trajectory_step_m) {
-    last_kept_ = p;
-    batch_.push_back(p);
-  }
-  last_ = p;
+  if (path_.add(p)) batch_.push_back(p);
   if (batch_.size() < kBatchPositions) return;
   {
     const std::lock_guard lock(mutex_);
@@ -44,7 +43,7 @@ void VisibleTruthTracker::add(const mapper::Point2& p) {
 
 std::vector<mapper::Point2> VisibleTruthTracker::finish() {
   // The last position counts even when nearer than a step to the last kept one.
-  if (last_ && last_kept_ && (*last_ - *last_kept_).norm() > 0.0) batch_.push_back(*last_);
+  if (const auto tail = path_.unkept_last()) batch_.push_back(*tail);
   {
     const std::lock_guard lock(mutex_);
     pending_.insert(pending_.end(), batch_.begin(), batch_.end());

@@ -44,9 +44,12 @@ std::vector<mapper::Point2> subsample_path(std::span<const mapper::Point2> path,
 class PathSubsampler {
  public:
   explicit PathSubsampler(double step_m) : step_m_(step_m) {}
-  void add(const mapper::Point2& p);
+  /// True when `p` is kept (the first pose, or step_m from the last kept one).
+  bool add(const mapper::Point2& p);
   /// The subsampled path so far (the last pose added included).
   std::vector<mapper::Point2> path() const;
+  /// The last pose added when it was not kept (path() ends with it), else nothing.
+  std::optional<mapper::Point2> unkept_last() const;
 
  private:
   double step_m_;

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <exception>
 #include <mutex>
-#include <optional>
 #include <span>
 #include <thread>
 #include <vector>
@@ -39,10 +38,8 @@ class VisibleTruthTracker {
 
   std::span<const mapper::Segment> truth_;
   MapMetricsOptions options_;
-  // Main thread: the subsampling of PathSubsampler, the kept positions handed over at once.
-  std::optional<mapper::Point2> last_kept_;
-  std::optional<mapper::Point2> last_;
-  std::vector<mapper::Point2> batch_;
+  PathSubsampler path_;                  // main thread: which positions count...
+  std::vector<mapper::Point2> batch_;    // ...kept, not yet handed over
   std::vector<mapper::Point2> pending_;  // handed over, not yet tested (under mutex_)
   bool closing_ = false;                 // no more positions will come (under mutex_)
   std::vector<std::uint8_t> seen_;       // worker: per sample, seen from some position
