@@ -8,18 +8,21 @@ namespace cogmap::experiments {
 std::string histogram_to_pgm(const mapper::HistogramGrid& grid, double occupied_threshold) {
   const int w = grid.width(), h = grid.height();
   std::string out = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
-  out.reserve(out.size() + static_cast<std::size_t>(w) * h);
+  const std::size_t header = out.size();
+  out.resize(header + static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  char* pixel = out.data() + header;
   // PGM rows run top to bottom; grid rows run with y upwards, so the last row comes first.
   for (int y = h - 1; y >= 0; --y) {
+    const float* cells = grid.row(y);
     for (int x = 0; x < w; ++x) {
-      const float v = grid.get({x, y});
+      const float v = cells[x];
       unsigned char px = kPgmUnknown;
       if (v > occupied_threshold) {
         px = kPgmOccupied;
       } else if (v < 0.0f) {
         px = kPgmFree;
       }
-      out.push_back(static_cast<char>(px));
+      *pixel++ = static_cast<char>(px);
     }
   }
   return out;

@@ -16,9 +16,12 @@ double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_r
                    double half_angle_rad, double length_m) {
   double nearest = std::numeric_limits<double>::infinity();
   for (const ObstaclePoint& o : obstacles) {
+    // A point no nearer than the nearest so far cannot change it: skip its bearing's atan2.
+    const double distance = o.offset_m.norm() - 0.5 * length_m;
+    if (!(distance < nearest)) continue;
     const double bearing = std::atan2(o.offset_m.y(), o.offset_m.x());
     if (std::abs(wrap_angle_rad(bearing - heading_rad)) > half_angle_rad) continue;
-    nearest = std::min(nearest, o.offset_m.norm() - 0.5 * length_m);
+    nearest = distance;
   }
   return nearest;
 }

@@ -31,7 +31,8 @@ Vfh::Vfh(const VfhOptions& options) : options_(options) {
 
 int Vfh::wrap(int sector) const {
   const int n = sector_count();
-  return ((sector % n) + n) % n;
+  const int s = sector % n;  // in (-n, n): one division, not two
+  return s < 0 ? s + n : s;
 }
 
 int Vfh::sector_of(double angle_rad) const {
@@ -66,16 +67,21 @@ void Vfh::build(const std::vector<ObstaclePoint>& obstacles, double range_m) {
     const double gamma = d > r ? std::asin(r / d) : 0.5 * kPi;
     const int lo = sector_of(beta - gamma);
     const int span = wrap(sector_of(beta + gamma) - lo);
-    for (int i = 0; i <= span; ++i) density_[wrap(lo + i)] += m;  // Eq. 2.17
+    // Eq. 2.17 over sectors lo .. lo + span (lo is in [0, n)), stepping round without a division.
+    for (int i = 0, k = lo; i <= span; ++i) {
+      density_[k] += m;
+      if (++k == n) k = 0;
+    }
   }
   // Borenstein's smoothing: triangular weights l+1-|i| over ±l sectors.
   const int l = std::max(0, options_.smoothing_sectors);
   for (int k = 0; k < n; ++k) {
     double sum = 0.0, weights = 0.0;
-    for (int i = -l; i <= l; ++i) {
+    for (int i = -l, j = wrap(k - l); i <= l; ++i) {  // j = wrap(k + i)
       const double w = l + 1 - std::abs(i);
-      sum += w * density_[wrap(k + i)];
+      sum += w * density_[j];
       weights += w;
+      if (++j == n) j = 0;
     }
     smoothed_[k] = sum / weights;
   }

@@ -115,8 +115,7 @@ double SonarModel::range_noise_sd_m(double range_m) const {
   return std::hypot(options_.range_noise_fraction * range_m, options_.range_noise_floor_m);
 }
 
-sonar_detail::Cone SonarModel::cone_for(const SonarScene& scene, const mapper::Pose2& true_pose,
-                                        int index) const {
+sonar_detail::Cone SonarModel::cone_at(const mapper::Pose2& true_pose, int index) const {
   if (index < 0 || index >= static_cast<int>(geometry_.sonars.size())) {
     throw std::out_of_range("SonarModel: no transducer " + std::to_string(index));
   }
@@ -125,11 +124,21 @@ sonar_detail::Cone SonarModel::cone_for(const SonarScene& scene, const mapper::P
   cone.origin = true_pose.transform(mapper::Point2(m.x_m, m.y_m));
   cone.axis_rad = true_pose.theta_rad + m.heading_rad;
   cone.max_range_m = geometry_.sonar_max_range_m;
+  return cone;
+}
+
+void SonarModel::update_index(const SonarScene& scene) const {
   // The scene is normally the same object every ping (SimRobot builds it once), so the check is
   // one byte comparison; the index is rebuilt only when the geometry really changed.
   if (!index_ || !index_->matches(scene)) {
     index_ = std::make_shared<const sonar_detail::SceneIndex>(scene);
   }
+}
+
+sonar_detail::Cone SonarModel::cone_for(const SonarScene& scene, const mapper::Pose2& true_pose,
+                                        int index) const {
+  sonar_detail::Cone cone = cone_at(true_pose, index);
+  update_index(scene);
   return cone;
 }
 
@@ -164,10 +173,14 @@ double SonarModel::echo_probability(const SonarScene& scene, const mapper::Pose2
 
 mapper::SonarReading SonarModel::ping(const SonarScene& scene, const mapper::Pose2& true_pose,
                                       int index, double time_s) {
-  // echo_candidates() without its vector per ping: the same cone and index, a reused buffer.
-  const sonar_detail::Cone cone = cone_for(scene, true_pose, index);
-  thread_local std::vector<EchoCandidate> candidates;
-  sonar_detail::echo_candidates(scene, cone, options_, index_.get(), candidates);
+  update_index(scene);
+  return ping_indexed(scene, true_pose, index, time_s);
+}
+
+mapper::SonarReading SonarModel::ping_indexed(const SonarScene& scene,
+                                              const mapper::Pose2& true_pose, int index,
+                                              double time_s) {
+  const sonar_detail::Cone cone = cone_at(true_pose, index);  // throws before anything is drawn
   // Draw the same three numbers on every ping so the main stream advances identically whatever
   // the scene; a change in one wall then does not reshuffle the noise of every later reading.
   const double z = std::normal_distribution<double>(0.0, 1.0)(rng_);
@@ -181,21 +194,28 @@ mapper::SonarReading SonarModel::ping(const SonarScene& scene, const mapper::Pos
   r.time_s = time_s;
   r.echo = false;
   r.range_m = max_m;
-  if (u < options_.dropout_probability) return r;
+  if (u < options_.dropout_probability) return r;  // nothing to trace
   // The receiver triggers on the first echo that crosses its threshold: candidates in range
   // order, each heard independently (speckle of a rough surface) with its own probability.
-  for (const EchoCandidate& c : candidates) {
-    const double p = detection_probability(c.strength);
-    if (detector.uniform() >= p) continue;
-    // A weak echo crosses the threshold late in its envelope (threshold walk). The receiver is
-    // blanked for the first ~0.1 m (transducer ringing): a nearer surface is heard only once
-    // the blanking ends, so it reads as min range; noise never takes it below.
-    const double range_m = c.range_m + options_.threshold_walk_m * (1.0 - p);
-    const double noisy = range_m + z * range_noise_sd_m(range_m);
-    r.echo = true;
-    r.range_m = std::clamp(noisy, min_m, max_m);
-    return r;
-  }
+  struct Receiver final : sonar_detail::EchoListener {
+    PingStream& detector;
+    double p = 0.0;
+    explicit Receiver(PingStream& d) : detector(d) {}
+    bool hears(const EchoCandidate& c) override {
+      p = detection_probability(c.strength);
+      return detector.uniform() < p;
+    }
+  } receiver(detector);
+  const std::optional<EchoCandidate> heard =
+      sonar_detail::first_heard(scene, cone, options_, index_.get(), receiver);
+  if (!heard) return r;
+  // A weak echo crosses the threshold late in its envelope (threshold walk). The receiver is
+  // blanked for the first ~0.1 m (transducer ringing): a nearer surface is heard only once
+  // the blanking ends, so it reads as min range; noise never takes it below.
+  const double range_m = heard->range_m + options_.threshold_walk_m * (1.0 - receiver.p);
+  const double noisy = range_m + z * range_noise_sd_m(range_m);
+  r.echo = true;
+  r.range_m = std::clamp(noisy, min_m, max_m);
   return r;
 }
 
@@ -204,6 +224,7 @@ std::vector<mapper::SonarReading> SonarModel::cycle(
     const std::function<mapper::Pose2(double)>& true_pose_at) {
   std::vector<mapper::SonarReading> out;
   if (!(t1_s > t0_s)) return out;
+  bool indexed = false;  // the scene is checked against the index once, at the first firing
   for (;; ++next_firing_) {
     // Firing k of the current schedule happens at start + (k + 1) * cycle, computed from k
     // rather than accumulated, so rounding never drifts the schedule.
@@ -216,7 +237,11 @@ std::vector<mapper::SonarReading> SonarModel::cycle(
       if (sequence.empty()) continue;
       const int index = sequence[position_[a] % sequence.size()];
       position_[a] = (position_[a] + 1) % sequence.size();
-      out.push_back(ping(scene, pose, index, t));
+      if (!indexed) {
+        update_index(scene);
+        indexed = true;
+      }
+      out.push_back(ping_indexed(scene, pose, index, t));
     }
   }
   return out;

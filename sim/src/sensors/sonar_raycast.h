@@ -50,4 +50,20 @@ std::vector<EchoCandidate> echo_candidates(const SonarScene& scene, const Cone& 
 void echo_candidates(const SonarScene& scene, const Cone& cone, const SonarModelOptions& options,
                      const SceneIndex* index, std::vector<EchoCandidate>& out);
 
+/// Decides, candidate by candidate, whether the receiver hears an echo.
+class EchoListener {
+ public:
+  virtual ~EchoListener() = default;
+  /// True when `candidate` is heard; then no later candidate is offered.
+  virtual bool hears(const EchoCandidate& candidate) = 0;
+};
+
+/// Offers `listener` the candidates of echo_candidates() in the same order until it hears one,
+/// and returns that one (nullopt if none is heard). A ray's bounces are traced only when the
+/// candidates offered reach the range of its first hit (a bounce is never nearer), so a ping
+/// heard early traces few of them: the same answer as offering the full list, for less work.
+std::optional<EchoCandidate> first_heard(const SonarScene& scene, const Cone& cone,
+                                         const SonarModelOptions& options, const SceneIndex* index,
+                                         EchoListener& listener);
+
 }  // namespace cogmap::sim::sonar_detail

@@ -176,6 +176,14 @@ class SonarModel {
   /// with index_ brought up to date for `scene`.
   sonar_detail::Cone cone_for(const SonarScene& scene, const mapper::Pose2& true_pose,
                               int index) const;
+  /// Transducer `index`'s cone at `true_pose` (throws std::out_of_range for an unknown one).
+  sonar_detail::Cone cone_at(const mapper::Pose2& true_pose, int index) const;
+  /// Rebuilds index_ if `scene` is not bit for bit the one it was built from.
+  void update_index(const SonarScene& scene) const;
+  /// ping() against the scene index_ was last brought up to date for: cycle() checks the scene
+  /// once for all its pings (the check compares every surface).
+  mapper::SonarReading ping_indexed(const SonarScene& scene, const mapper::Pose2& true_pose,
+                                    int index, double time_s);
 };
 
 /// Transducers of one P2OS sonar array: array a holds indices 8a .. 8a+7.
