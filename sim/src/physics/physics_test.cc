@@ -81,5 +81,35 @@ TEST(PhysicsWorld, WallStopsTheBody) {
   EXPECT_NEAR(physics.pose().theta_rad, 0.0, 1e-3);
 }
 
+// Skipping Box2D away from every fixture must change nothing: a drive that nears, scrapes and
+// leaves walls, a corner and a pillar gives the same poses and contact flags, bit for bit, as
+// stepping Box2D every time.
+TEST(PhysicsWorld, SkippingFreeStepsChangesNothing) {
+  const WorldSpec w = parse(
+      "name: corner\nwalls: {thickness_m: 0.12, polylines: [[[-3, 5], [5, 5], [5, -3]]]}\n"
+      "obstacles: [{circle: {center: [2, 1], radius_m: 0.2}}]\n"
+      "start: {x_m: 0, y_m: 0}\n");
+  PhysicsOptions always;
+  always.skip_free_steps = false;
+  PhysicsWorld skipping(w), stepping(w, always);
+  int contact_steps = 0, free_steps = 0;
+  for (int i = 0; i < 6000; ++i) {
+    // Arcs, spins and straight runs at the corner (4, 4), the pillar and back out.
+    const double t = 0.01 * i;
+    const BodyTwist twist{0.5 * std::cos(0.37 * t) + 0.2, 0.8 * std::sin(0.23 * t)};
+    const mapper::Pose2& a = skipping.step(twist, 0.01);
+    const mapper::Pose2& b = stepping.step(twist, 0.01);
+    ASSERT_EQ(a.x_m, b.x_m) << "step " << i;
+    ASSERT_EQ(a.y_m, b.y_m) << "step " << i;
+    ASSERT_EQ(a.theta_rad, b.theta_rad) << "step " << i;
+    ASSERT_EQ(skipping.in_contact(), stepping.in_contact()) << "step " << i;
+    (stepping.in_contact() ? contact_steps : free_steps)++;
+  }
+  EXPECT_GT(contact_steps, 100);              // the walls were really met
+  EXPECT_GT(free_steps, 1000);                // and really left
+  EXPECT_GT(skipping.skipped_steps(), 1000);  // and Box2D was skipped for much of the drive
+  EXPECT_EQ(stepping.skipped_steps(), 0);
+}
+
 }  // namespace
 }  // namespace cogmap::sim

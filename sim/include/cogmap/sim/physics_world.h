@@ -4,6 +4,7 @@
 /// no sideways slide, as a skid-steer moves) and contacts stop it.
 
 #include <memory>
+#include <optional>
 
 #include "cogmap/mapper/seam/pose2.h"
 #include "cogmap/sim/skid_steer.h"
@@ -23,6 +24,10 @@ struct PhysicsOptions {
   double friction = 0.4;         ///< body against walls; rubber tyres and bumpers on plaster
   int velocity_iterations = 8;   ///< Box2D solver iterations per step
   int position_iterations = 3;   ///< Box2D position correction iterations per step
+  /// Skip Box2D's step while no fixture is within reach of the body (the pose is then the free
+  /// arc either way; docs/performance.md "Physics: free steps"). false steps Box2D always
+  /// (the test compares the two).
+  bool skip_free_steps = true;
 };
 
 /// One Box2D world with the robot in it. Not copyable (Box2D owns raw pointers).
@@ -45,14 +50,26 @@ class PhysicsWorld {
   /// True when the body touched a wall or an obstacle during the last step.
   bool in_contact() const { return in_contact_; }
 
+  /// Steps that skipped Box2D (PhysicsOptions::skip_free_steps) so far.
+  long skipped_steps() const { return skipped_steps_; }
+
   /// Number of static fixtures built from the world (walls, obstacles).
   int static_fixture_count() const { return static_fixtures_; }
 
  private:
+  /// True when no fixture but the body's own lies within reach of it and it has no contact, so a
+  /// Box2D step would move it freely.
+  bool clear_of_obstacles();
+
   PhysicsOptions options_;
   std::unique_ptr<b2World> world_;
   b2Body* body_ = nullptr;  ///< owned by world_
   mapper::Pose2 pose_;
+  long skipped_steps_ = 0;
+  /// Where the last query found no fixture within reach plus slack (clear_of_obstacles).
+  std::optional<mapper::Point2> clear_at_;
+  /// Where the last query found a fixture within reach.
+  std::optional<mapper::Point2> blocked_at_;
   bool in_contact_ = false;
   int static_fixtures_ = 0;
 };
