@@ -366,11 +366,28 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     m.asr_count = m.rooms.size();
     m.memory = memory_metrics(sizes);
 
+    const TrajectoryView rows = session.rows.view();
+    // trajectory.csv (and the nav trace) only read the rows: written on a second thread while
+    // this one works out the truth metrics and the maps (it formats ~10 numbers a frame).
+    auto trajectory_files = std::async(std::launch::async, [&] {
+      mapper::io::write_file_atomic_chunks(
+          out / "trajectory.csv",
+          [&](const mapper::io::ChunkSink& emit) { trajectory_csv_chunks(rows, emit); },
+          durability);
+      if (experiment.nav_trace) {
+        mapper::io::write_file_atomic_chunks(
+            out / "nav_trace.csv",
+            [&](const mapper::io::ChunkSink& emit) {
+              nav_trace_csv_chunks(session.nav_rows, emit);
+            },
+            durability);
+      }
+    });
+
     // The figures and the SVG draw the paths at 5 cm spacing.
     constexpr double kDrawnPathStep_m = 0.05;
     PathSubsampler true_path(kDrawnPathStep_m), est_path(kDrawnPathStep_m),
         odom_path(kDrawnPathStep_m);
-    const TrajectoryView rows = session.rows.view();
     for (const TrajectoryRow& r : rows) {
       est_path.add(r.estimate.translation());  // the SVG's
       if (!figures) continue;                  // the other two only for the figures
@@ -391,15 +408,6 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       }
     }
 
-    mapper::io::write_file_atomic_chunks(
-        out / "trajectory.csv",
-        [&](const mapper::io::ChunkSink& emit) { trajectory_csv_chunks(rows, emit); }, durability);
-    if (experiment.nav_trace) {
-      mapper::io::write_file_atomic_chunks(
-          out / "nav_trace.csv",
-          [&](const mapper::io::ChunkSink& emit) { nav_trace_csv_chunks(session.nav_rows, emit); },
-          durability);
-    }
     mapper::io::write_file_atomic(out / "map_segments.csv", segments_csv(corrected), durability);
     mapper::io::write_file_atomic(out / "map_segments_odom.csv", segments_csv(odometry),
                                   durability);
@@ -435,6 +443,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       render::write_graph_figure(mapper.graph(), experiment.name + ": room graph",
                                  out / "figures" / "graph.png");
     }
+    trajectory_files.get();  // rethrows a failed write
     // Last: its presence marks the run as finished (sweeps skip finished runs).
     mapper::io::write_file_atomic(out / "metrics.json", metrics_json_text(m), durability);
   } catch (const std::exception& e) {
