@@ -85,6 +85,37 @@ TEST(SegmentIndex, NearestDistanceMatchesBruteForce) {
   }());
 }
 
+TEST(SegmentIndex, AnyWithinMatchesBruteForce) {
+  std::vector<Segment> segs;
+  for (int i = 0; i < 40; ++i) {
+    const double a = i * 0.7;
+    segs.push_back({{std::cos(a) * i * 0.3, std::sin(a) * i * 0.2},
+                    {std::cos(a) * i * 0.3 + 0.5, std::sin(a) * i * 0.2 - 0.4}});
+  }
+  const SegmentIndex index(segs, 0.5);
+  int near = 0, far = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Point2 p(std::sin(k * 1.3) * 8.0, std::cos(k * 0.9) * 6.0);
+    double brute = INFINITY;
+    for (const auto& s : segs) brute = std::min(brute, mapper::distance_to_segment_m(p, s));
+    for (const double r : {0.05, 0.42, 1.3}) {
+      EXPECT_EQ(index.any_within_m(p, r), brute <= r) << k << " r " << r;
+      (brute <= r ? near : far)++;
+    }
+  }
+  EXPECT_GT(near, 200);  // both answers were exercised (305 and 895 of 1200)
+  EXPECT_GT(far, 600);
+  // Exactly at the distance counts; outside the grid, and empty or negative, do not.
+  const std::vector<Segment> wall{{{0, 0}, {0, 2}}};
+  const SegmentIndex one(wall, 0.5);
+  EXPECT_TRUE(one.any_within_m({0.5, 1.0}, 0.5));
+  EXPECT_FALSE(one.any_within_m({0.5, 1.0}, 0.49));
+  EXPECT_TRUE(one.any_within_m({-3.0, 3.0}, 3.2));  // (0, 2) is sqrt(10) = 3.16 m away
+  EXPECT_FALSE(one.any_within_m({-3.0, 3.0}, 3.1));
+  EXPECT_FALSE(one.any_within_m({0.5, 1.0}, -1.0));
+  EXPECT_FALSE(SegmentIndex({}, 0.5).any_within_m({0.0, 0.0}, 10.0));
+}
+
 TEST(SegmentIndex, BlockedHonoursExclusion) {
   const std::vector<Segment> segs{{{1, -1}, {1, 1}}, {{3, -1}, {3, 1}}};
   const SegmentIndex index(segs, 0.5);

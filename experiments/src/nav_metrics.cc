@@ -56,7 +56,11 @@ double footprint_clearance_m(const mapper::Pose2& pose, std::span<const mapper::
 }  // namespace
 
 void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::Segment> surfaces,
-                  const mapper::RobotGeometry& robot) {
+                  const mapper::RobotGeometry& robot, const SegmentIndex* index) {
+  // footprint_clearance_m tests a surface only when its centre is within `reach` of it; a pose
+  // with no surface that near (a little beyond, against rounding) has clearance +infinity.
+  const double reach =
+      std::hypot(0.5 * robot.length_m, 0.5 * robot.width_m) + kContactDistanceM + 1e-9;
   std::size_t episodes = 0;
   double time_s = 0.0;
   nav.contact_start_s.clear();
@@ -64,7 +68,8 @@ void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::
   std::optional<double> last_t;
   for (const TrajectoryRow& r : rows) {
     if (!r.truth) continue;
-    const bool now = footprint_clearance_m(*r.truth, surfaces, robot) <= kContactDistanceM;
+    const bool near = !index || index->any_within_m(r.truth->translation(), reach);
+    const bool now = near && footprint_clearance_m(*r.truth, surfaces, robot) <= kContactDistanceM;
     if (now && !touching) {
       ++episodes;
       nav.contact_start_s.push_back(r.t_s);

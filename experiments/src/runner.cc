@@ -398,7 +398,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       m.localization = evaluate_trajectory(rows);
       if (breakdown_room.valid()) breakdown_room.get();
       m.error_breakdown = breakdown->finish(rows);
-      add_contacts(m.nav, rows, truth->surfaces, geometry);
+      add_contacts(m.nav, rows, truth->surfaces, geometry, &breakdown->truth_index());
       if (experiment.controller.type == ControllerKind::kExplore) {
         const TrueRooms rooms = count_true_rooms(truth->surfaces, rows);
         if (rooms.measurable) {  // else null: a world too large to rasterise finely

@@ -118,6 +118,23 @@ double SegmentIndex::nearest_distance_m(const Point2& p) const {
   return best;
 }
 
+bool SegmentIndex::any_within_m(const Point2& p, double radius_m) const {
+  if (segments_.empty() || !(radius_m >= 0.0)) return false;
+  // A segment point within radius_m of p lies in the box p ± radius_m, and the segment is
+  // listed in the cell holding that point; every segment lies inside the grid, so the box is
+  // clamped to it.
+  const Cell lo = cell_of({p.x() - radius_m, p.y() - radius_m});
+  const Cell hi = cell_of({p.x() + radius_m, p.y() + radius_m});
+  for (int y = std::max(0, lo.y); y <= std::min(height_ - 1, hi.y); ++y) {
+    for (int x = std::max(0, lo.x); x <= std::min(width_ - 1, hi.x); ++x) {
+      for (const std::uint32_t i : *bucket(x, y)) {
+        if (mapper::distance_to_segment_m(p, segments_[i]) <= radius_m) return true;
+      }
+    }
+  }
+  return false;
+}
+
 bool SegmentIndex::blocked(const Point2& a, const Point2& b, std::size_t exclude) const {
   if (segments_.empty()) return false;
   // Amanatides-Woo traversal of the cells the segment crosses, starting at `a`, so the

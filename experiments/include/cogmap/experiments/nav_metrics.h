@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cogmap/experiments/metrics.h"
+#include "cogmap/experiments/segment_index.h"
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
 
@@ -54,8 +55,10 @@ inline constexpr double kContactDistanceM = 0.02;
 
 /// Counts contact episodes (a run of consecutive frames in contact is one) and their time,
 /// from the true poses of `rows` (rows without truth are skipped) against `surfaces`.
+/// `index`, if given, must index exactly `surfaces`: it only skips, untested, the poses with no
+/// surface within reach of the footprint (the answer is the same).
 void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::Segment> surfaces,
-                  const mapper::RobotGeometry& robot);
+                  const mapper::RobotGeometry& robot, const SegmentIndex* index = nullptr);
 
 /// Odometry path length of `rows`, metres.
 double odometry_distance_m(TrajectoryView rows);

@@ -26,6 +26,10 @@ class SegmentIndex {
   /// Distance from `p` to the nearest segment, metres; +infinity when the index is empty.
   double nearest_distance_m(const mapper::Point2& p) const;
 
+  /// True when some segment passes within `radius_m` of `p` (a few cells looked at, never a
+  /// ring search): the same answer as nearest_distance_m(p) <= radius_m.
+  bool any_within_m(const mapper::Point2& p, double radius_m) const;
+
   /// True when some segment other than `exclude` intersects the closed segment from `a` to `b`.
   bool blocked(const mapper::Point2& a, const mapper::Point2& b, std::size_t exclude) const;
 
