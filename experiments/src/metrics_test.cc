@@ -64,13 +64,19 @@ TEST(PathSubsampler, KeepsFirstEveryStepAndLast) {
   EXPECT_TRUE(PathSubsampler(step_m).path().empty());
 }
 
-TEST(SegmentIndex, NearestDistanceMatchesBruteForce) {
+// 40 short segments on a spiral about the origin, in every direction.
+std::vector<Segment> spiral_of_segments() {
   std::vector<Segment> segs;
   for (int i = 0; i < 40; ++i) {
     const double a = i * 0.7;
     segs.push_back({{std::cos(a) * i * 0.3, std::sin(a) * i * 0.2},
                     {std::cos(a) * i * 0.3 + 0.5, std::sin(a) * i * 0.2 - 0.4}});
   }
+  return segs;
+}
+
+TEST(SegmentIndex, NearestDistanceMatchesBruteForce) {
+  const std::vector<Segment> segs = spiral_of_segments();
   const SegmentIndex index(segs, 0.5);
   for (int k = 0; k < 200; ++k) {
     const Point2 p(std::sin(k * 1.3) * 15.0, std::cos(k * 0.9) * 12.0 + k * 0.05);
@@ -86,12 +92,7 @@ TEST(SegmentIndex, NearestDistanceMatchesBruteForce) {
 }
 
 TEST(SegmentIndex, AnyWithinMatchesBruteForce) {
-  std::vector<Segment> segs;
-  for (int i = 0; i < 40; ++i) {
-    const double a = i * 0.7;
-    segs.push_back({{std::cos(a) * i * 0.3, std::sin(a) * i * 0.2},
-                    {std::cos(a) * i * 0.3 + 0.5, std::sin(a) * i * 0.2 - 0.4}});
-  }
+  const std::vector<Segment> segs = spiral_of_segments();
   const SegmentIndex index(segs, 0.5);
   int near = 0, far = 0;
   for (int k = 0; k < 400; ++k) {
