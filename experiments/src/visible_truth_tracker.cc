@@ -1,7 +1,5 @@
 #include "cogmap/experiments/visible_truth_tracker.h"
 
-#include <utility>
-
 #include "cogmap/experiments/segment_index.h"
 
 namespace cogmap::experiments {
