@@ -40,11 +40,42 @@ Point2 wall_normal(const std::vector<std::optional<Point2>>& scan, const Point2&
   return n.dot(jamb_normal) > std::cos(o.max_axis_angle_deg * kPi / 180.0 / 2.0) ? n : jamb_normal;
 }
 
+/// What lies beyond an opening, in the lane the body sweeps along its axis (half-width
+/// beyond_lane_m) between depth_m (points nearer the jamb line are the wall and its smear,
+/// judged by the caller) and beyond_clear_m beyond its line: how many scan points, and how far
+/// across the lane they spread.
+struct Beyond {
+  int points = 0;
+  double span_m = 0.0;
+};
+
+Beyond lane_beyond(const std::vector<std::optional<Point2>>& scan, const Point2& center,
+                   const Point2& normal, const DoorOptions& o) {
+  const Point2 side(-normal.y(), normal.x());
+  Beyond b;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const std::optional<Point2>& q : scan) {
+    if (!q) continue;
+    const Point2 d = *q - center;
+    const double along = normal.dot(d), across = side.dot(d);
+    if (along < o.depth_m || along >= o.beyond_clear_m || std::abs(across) >= o.beyond_lane_m) {
+      continue;
+    }
+    ++b.points;
+    lo = std::min(lo, across);
+    hi = std::max(hi, across);
+  }
+  if (b.points > 0) b.span_m = hi - lo;
+  return b;
+}
+
 }  // namespace
 
 std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
                                     const Point2& robot_m, const Point2& goal_m,
-                                    const DoorOptions& o, const std::vector<Point2>& excluded) {
+                                    const DoorOptions& o, const std::vector<Point2>& excluded,
+                                    bool* goal_in_pocket) {
+  if (goal_in_pocket) *goal_in_pocket = false;
   const Point2 to_goal = goal_m - robot_m;
   const double goal_dist = to_goal.norm();
   if (goal_dist < 1e-6) return std::nullopt;
@@ -111,6 +142,21 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
       if (goal_beyond < o.approach_m && (goal_off - center).norm() > o.goal_in_door_m) continue;
       const double offset = std::abs(cross(g, center));  // from the goal line
       if (offset > o.max_offset_m) continue;
+      // Something sensed in the body's lane within beyond_clear_m beyond the gap: a pocket
+      // (furniture beside a wall), where the crossing could not end with room to turn.
+      const Beyond beyond = lane_beyond(scan, center, n, o);
+      if (beyond.points > 0) {
+        // A goal inside it, closed across at least half the lane (one or two points are no
+        // back wall: a beam looking through a doorway at an angle hears the wall beside it
+        // and paints that echo on its axis, inside the lane beyond the door), cannot be
+        // reached.
+        const Point2 side(-n.y(), n.x());
+        if (goal_in_pocket && beyond.span_m >= o.beyond_lane_m && goal_beyond >= 0.0 &&
+            goal_beyond < o.beyond_clear_m && std::abs(side.dot(goal_off - center)) < 0.5 * width) {
+          *goal_in_pocket = true;
+        }
+        continue;
+      }
       const bool known_bad = std::any_of(excluded.begin(), excluded.end(), [&](const Point2& e) {
         return (e - (robot_m + center)).norm() < o.track_m;
       });
@@ -131,7 +177,7 @@ std::optional<Opening> DoorPassage::find(const std::vector<ObstaclePoint>& obsta
   std::erase_if(rejected_, [&](const auto& r) { return r.second <= time_s; });
   std::vector<Point2> excluded;
   for (const auto& r : rejected_) excluded.push_back(r.first);
-  return find_opening(obstacles, robot_m, goal_m, options_, excluded);
+  return find_opening(obstacles, robot_m, goal_m, options_, excluded, &goal_in_pocket_);
 }
 
 void DoorPassage::reject(double time_s) {

@@ -26,10 +26,14 @@ struct Opening {
 /// the one whose centre lies nearest the goal line (within max_offset_m) and which the goal is
 /// beyond (or within approach_m of). nullopt when there is none.
 /// Openings whose centre lies within track_m of one of `excluded` (estimate frame) are skipped.
+/// A gap that is a pocket (something sensed within beyond_clear_m beyond it, in the body's
+/// lane) is no opening; when the goal itself lies in such a pocket, `goal_in_pocket` (if
+/// given) is set: the body cannot get there and turn.
 std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
                                     const Point2& robot_m, const Point2& goal_m,
                                     const DoorOptions& options,
-                                    const std::vector<Point2>& excluded = {});
+                                    const std::vector<Point2>& excluded = {},
+                                    bool* goal_in_pocket = nullptr);
 
 /// The state machine. step() returns the point to steer to; while crossing (mode()
 /// kDoorCross) the caller steers straight at it without VFH: the jambs may sit inside VFH's
@@ -58,6 +62,8 @@ class DoorPassage {
   /// The opening, excluding those found closed or abandoned in the last rejected_keep_s.
   std::optional<Opening> find(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
                               const Point2& goal_m, double time_s);
+  /// True when the last find() saw the goal inside a pocket (find_opening).
+  bool goal_in_pocket() const { return goal_in_pocket_; }
 
   /// Passages completed so far.
   std::size_t crossed() const { return crossed_; }
@@ -77,6 +83,7 @@ class DoorPassage {
   std::size_t crossed_ = 0;
   std::size_t abandoned_ = 0;
   std::optional<Opening> candidate_;  // detected, not yet confirmed
+  bool goal_in_pocket_ = false;       // the last find() saw the goal in a pocket
   double candidate_since_s_ = 0.0;
   std::vector<std::pair<Point2, double>> rejected_;  // opening centre, when it is forgotten
 

@@ -67,6 +67,50 @@ TEST(FindOpening, IgnoresAnOpeningTheGoalIsNotBeyond) {
   EXPECT_FALSE(find_opening(points_of(walls, Point2(0, 0)), Point2(0, 0), Point2(0.5, 0.2), {}));
 }
 
+TEST(FindOpening, RefusesAPocketTheBodyCannotTurnIn) {
+  // A 0.9 m gap in the wall at x = 2 m; behind it a back wall across the gap's axis. The
+  // crossing ends exit_m (0.7 m) beyond the gap, where the body turns in 0.40 m: for the
+  // explorer a back wall nearer than beyond_clear_m (1.1 m) makes the gap a pocket.
+  const auto with_back = [](double back_x, double back_lo, double back_hi) {
+    auto walls = wall_with_gap(2.0, -0.45, 0.45);
+    walls.push_back({Point2(back_x, back_lo), Point2(back_x, back_hi)});
+    return points_of(walls, Point2(0, 0));
+  };
+  const Point2 robot(0, 0), goal(4, 0);
+  const DoorOptions explorer = explorer_door_options();
+  EXPECT_FALSE(find_opening(with_back(2.8, -1.0, 1.0), robot, goal, explorer));      // 0.8 m deep
+  EXPECT_FALSE(find_opening(with_back(3.05, -1.0, 1.0), robot, goal, explorer));     // 1.05 m
+  const auto deep = find_opening(with_back(3.2, -1.0, 1.0), robot, goal, explorer);  // a room
+  ASSERT_TRUE(deep.has_value());
+  EXPECT_NEAR(deep->center_m.x(), 2.0, 0.01);
+  // Something 0.8 m beyond but clear of the lane the body sweeps (±0.35 m) leaves a door.
+  EXPECT_TRUE(find_opening(with_back(2.8, 0.45, 1.5), robot, goal, explorer).has_value());
+  // Routes check nothing beyond (beyond_clear_m 0).
+  EXPECT_TRUE(find_opening(with_back(2.8, -1.0, 1.0), robot, goal, DoorOptions{}).has_value());
+}
+
+TEST(FindOpening, AGoalInsideAPocketIsReportedWhenItsBackIsClosedAcrossTheLane) {
+  const auto with_back = [](double back_lo, double back_hi) {
+    auto walls = wall_with_gap(2.0, -0.45, 0.45);
+    walls.push_back({Point2(2.8, back_lo), Point2(2.8, back_hi)});
+    return points_of(walls, Point2(0, 0));
+  };
+  const DoorOptions explorer = explorer_door_options();
+  bool in_pocket = false;
+  // The goal 0.4 m beyond the gap, a back wall 0.8 m beyond it across the lane.
+  EXPECT_FALSE(
+      find_opening(with_back(-1.0, 1.0), Point2(0, 0), Point2(2.4, 0.0), explorer, {}, &in_pocket));
+  EXPECT_TRUE(in_pocket);
+  // A goal beyond the back wall is not in the pocket (the way there is elsewhere).
+  find_opening(with_back(-1.0, 1.0), Point2(0, 0), Point2(4.0, 0.0), explorer, {}, &in_pocket);
+  EXPECT_FALSE(in_pocket);
+  // What lies beyond spreads only 0.1 m across the lane: a smeared echo, no back wall. The gap
+  // is still refused, but the goal is not given up.
+  EXPECT_FALSE(
+      find_opening(with_back(0.0, 0.1), Point2(0, 0), Point2(2.4, 0.0), explorer, {}, &in_pocket));
+  EXPECT_FALSE(in_pocket);
+}
+
 /// Scripted sonar: every transducer fires every cycle; the range is the nearest hit of five
 /// rays across the 30° beam, echo when within 5 m.
 std::vector<SonarReading> scripted_sonar(const Pose2& truth, const RobotGeometry& robot,

@@ -34,6 +34,11 @@ TEST(ExploreOptions, TheDoorBehaviourIsTheRouteFollowersWithoutTheSweep) {
   EXPECT_EQ(explore.enabled, route.enabled);
   EXPECT_EQ(explore.speed_mps, route.speed_mps);
   EXPECT_EQ(explore.search_timeout_s, route.search_timeout_s);
+  // Pockets: refused and a goal in one given up by the explorer only (docs/algorithms.md).
+  EXPECT_EQ(route.beyond_clear_m, 0.0);
+  EXPECT_EQ(explore.beyond_clear_m, 1.1);
+  EXPECT_FALSE(route.give_up_goal_in_pocket);
+  EXPECT_TRUE(explore.give_up_goal_in_pocket);
 }
 
 VelocityCommand step(Controller& c, const GridUpdater& grid, int i, const Pose2& pose) {

@@ -45,9 +45,11 @@ class RouteFollower final : public ReroutableFollower {
     // Stuck on the way: probing head-on again would drive back into what stopped the robot.
     if (stuck) probe_failed_at_ = here;
     const bool stalled_too_long = now - progress_s_ > options_.give_up_s;
-    if ((stuck && ++attempts_ > options_.recovery.max_attempts) || stalled_too_long) {
+    if ((stuck && ++attempts_ > options_.recovery.max_attempts) || stalled_too_long ||
+        goal_in_pocket_) {
       // This waypoint has defeated every recovery, or the robot has not come any nearer for
-      // give_up_s: give it up, report it, and go on with the next one.
+      // give_up_s, or it lies in a pocket the body cannot turn in (the door behaviour saw it
+      // last cycle): give it up, report it, and go on with the next one.
       ++core_.trace().skipped_waypoints;
       next_waypoint(here, now);
       advance(here, now);
@@ -98,6 +100,7 @@ class RouteFollower final : public ReroutableFollower {
     search_.stop();
     search_due_ = false;
     searches_ = 0;
+    goal_in_pocket_ = false;
     best_m_ = std::numeric_limits<double>::infinity();
   }
   const NavTrace& trace() const override { return core_.trace(); }
@@ -156,7 +159,10 @@ class RouteFollower final : public ReroutableFollower {
       // openings the line already threads are VFH's.
       const bool blocked = line_blocked(points, here, goal, options_.vfh.safety_radius_m, 0.1,
                                         options_.door.search_range_m);
-      if (!door_.offer(blocked ? door_.find(points, here, goal, now) : std::nullopt, now)) {
+      const std::optional<Opening> found =
+          blocked ? door_.find(points, here, goal, now) : std::nullopt;
+      goal_in_pocket_ = blocked && door_.goal_in_pocket() && options_.door.give_up_goal_in_pocket;
+      if (!door_.offer(found, now)) {
         return std::nullopt;
       }
     }
@@ -253,6 +259,7 @@ class RouteFollower final : public ReroutableFollower {
 
   void next_waypoint(const Point2& leg_start, double now) {
     leg_start_ = leg_start;
+    goal_in_pocket_ = false;  // seen for the waypoint just left
     ++index_;
     attempts_ = 0;
     probe_failed_at_.reset();
@@ -304,6 +311,7 @@ class RouteFollower final : public ReroutableFollower {
   std::optional<Point2> probe_failed_at_;  // where the probe last gave up (this waypoint)
   std::optional<double> probe_since_s_;    // probing: when it last came progress_m nearer
   double probe_best_m_ = 0.0;              // ...and how near that was
+  bool goal_in_pocket_ = false;            // the door behaviour saw the waypoint in a pocket
   bool search_due_ = false;                // the probe stalled this cycle: sweep the wall
   int searches_ = 0;                       // sweeps started for the current waypoint
   NavCore core_;

@@ -186,10 +186,20 @@ struct DoorOptions {
   double max_offset_m = 1.6;    ///< an opening's centre may lie this far off the goal line
                                 ///< (0.5 m estimate drift + door offsets along a 5 m wall)
   double depth_m = 0.3;         ///< a point this far beyond the jamb line still closes a gap
-  double bin_deg = 3.0;         ///< the polar scan's bins (nearest point per bin)
-  double approach_m = 0.8;      ///< align on the door axis this far before the opening
-  double exit_m = 0.7;          ///< the crossing ends this far beyond it (half the body + margin)
-  double lookahead_m = 0.6;     ///< pure pursuit along the axis while crossing
+  /// A gap with something behind it is a pocket (furniture beside a wall), not a door: the
+  /// crossing ends exit_m beyond the opening, where the body must be able to turn on the spot.
+  /// 0 (routes) checks nothing: a route leads through real doors, where a single smeared echo
+  /// beyond one would refuse it; the explorer's goals may lie in pockets (explorer_door_options).
+  double beyond_clear_m = 0.0;  ///< explorer: 1.1, nothing sensed this near beyond the opening's
+                                ///< line: exit_m 0.7 + the P2-AT's half-diagonal 0.40 m
+  double beyond_lane_m = 0.35;  ///< ...within this of its axis: half the 0.505 m body + 0.1 m
+  /// A waypoint inside a pocket closed across at least beyond_lane_m is given up at once (the
+  /// explorer's goal is only a place to look from; it then chooses another).
+  bool give_up_goal_in_pocket = false;
+  double bin_deg = 3.0;      ///< the polar scan's bins (nearest point per bin)
+  double approach_m = 0.8;   ///< align on the door axis this far before the opening
+  double exit_m = 0.7;       ///< the crossing ends this far beyond it (half the body + margin)
+  double lookahead_m = 0.6;  ///< pure pursuit along the axis while crossing
   double align_tolerance_m = 0.12;   ///< lateral error at which the crossing starts
   double speed_mps = 0.3;            ///< crossing speed: 2.3 s through a 0.7 m band, time for the
                                      ///< side sonars (fired every ~0.5 s) to see both jambs
@@ -424,10 +434,12 @@ struct EdgeOptions {
   double min_loop_m = 10.0;         ///< ...after at least this much travel
 };
 
-/// DoorOptions with the door search off (the explorer's default).
-inline DoorOptions without_door_search() {
+/// The explorer's DoorOptions: the door search off; pockets refused, a goal in one given up.
+inline DoorOptions explorer_door_options() {
   DoorOptions o;
   o.search_per_waypoint = 0;
+  o.beyond_clear_m = 1.1;
+  o.give_up_goal_in_pocket = true;
   return o;
 }
 
@@ -441,7 +453,7 @@ struct ExploreOptions {
   /// 12 generated explorations, seeds 1-3 (docs/algorithms.md, "Door search"): with sweeps,
   /// explorations completed 30 -> 29 of 51, rooms 253 -> 251 of 345, median wall error 0.226 ->
   /// 0.238 m; a frontier behind a wall is replaced by another one sooner than a sweep finds it.
-  DoorOptions door = without_door_search();
+  DoorOptions door = explorer_door_options();
   double waypoint_tolerance_m = 0.4;  ///< as RouteOptions
   double give_up_s = 45.0;            ///< no new cells seen and no progress_m nearer the goal for
                                       ///< this long: the goal is given up (a 7 m leg takes 14 s,
