@@ -51,8 +51,9 @@ struct Beyond {
 
 Beyond lane_beyond(const std::vector<std::optional<Point2>>& scan, const Point2& center,
                    const Point2& normal, const DoorOptions& o) {
-  const Point2 side(-normal.y(), normal.x());
   Beyond b;
+  if (o.beyond_clear_m <= o.depth_m) return b;  // no pocket check (routes)
+  const Point2 side(-normal.y(), normal.x());
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const std::optional<Point2>& q : scan) {
     if (!q) continue;
