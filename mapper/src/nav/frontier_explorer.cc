@@ -84,7 +84,15 @@ class FrontierExplorer final : public Controller {
     if (goal_ && (failed || follower_->done())) {
       // Looked at from near (its frontier should be gone; if the sonar still cannot see it
       // from there it never will), or not reachable after all: not this frontier again.
-      if (failed || map_.frontier(map_.cell_of(target_))) banned_.push_back(target_);
+      // A doorway looked at leaves open what the look began to reveal beyond it: the far
+      // side's first free cells are new frontier (seen through the gap, past the jambs'
+      // echoes), and banning them with the rest would give up the room behind the door.
+      if (failed) {
+        banned_.push_back({target_, std::nullopt});
+      } else if (map_.frontier(map_.cell_of(target_))) {
+        banned_.push_back(
+            {target_, target_in_doorway_ ? std::optional<Point2>(here) : std::nullopt});
+      }
       goal_.reset();
       arrived_s_.reset();
     }
@@ -103,6 +111,7 @@ class FrontierExplorer final : public Controller {
       progress_s_ = now;
       goal_ = plan->goal;
       target_ = plan->frontier;
+      target_in_doorway_ = plan->frontier_in_doorway;
       best_m_ = std::numeric_limits<double>::infinity();
       follower_->set_waypoints(plan->waypoints);
     }
@@ -159,9 +168,10 @@ class FrontierExplorer final : public Controller {
   std::size_t seen_at_progress_ = 0;
   std::size_t skipped_seen_ = 0;
   std::size_t recoveries_seen_ = 0;
-  std::vector<Point2> banned_;        // frontier cells given up or looked at in vain
-  std::optional<double> arrived_s_;   // arrived at the goal: holding still since...
-  std::size_t arrived_readings_ = 0;  // ...with this many readings integrated
+  bool target_in_doorway_ = false;      // ...which lies in a doorway
+  std::vector<BannedFrontier> banned_;  // frontier cells given up or looked at in vain
+  std::optional<double> arrived_s_;     // arrived at the goal: holding still since...
+  std::size_t arrived_readings_ = 0;    // ...with this many readings integrated
 };
 
 }  // namespace

@@ -79,8 +79,8 @@ bool pinched(const ExploreMap& map, Cell c, double reach_m) {
 }  // namespace
 
 std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2& from,
-                                             std::span<const Point2> banned, double banned_radius_m,
-                                             const FrontierOptions& o) {
+                                             std::span<const BannedFrontier> banned,
+                                             double banned_radius_m, const FrontierOptions& o) {
   const int w = map.width(), h = map.height();
   const Cell start = map.cell_of(from.translation());
   if (w == 0 || !map.inside(start)) return std::nullopt;
@@ -92,8 +92,11 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   };
   auto is_banned = [&](Cell c) {
     const Point2 p = map.center_of(c);
-    return std::any_of(banned.begin(), banned.end(),
-                       [&](const Point2& b) { return (b - p).norm() <= banned_radius_m; });
+    return std::any_of(banned.begin(), banned.end(), [&](const BannedFrontier& b) {
+      if ((b.at - p).norm() > banned_radius_m) return false;
+      return !b.seen_from ||
+             (p - *b.seen_from).norm() <= (b.at - *b.seen_from).norm() + 0.5 * map.cell_m();
+    });
   };
   // Frontier cells: passable, next to an unseen cell.
   std::vector<std::uint8_t> frontier(n, 0);
@@ -245,6 +248,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   plan.frontier = map.center_of({static_cast<int>(viewed % w), static_cast<int>(viewed / w)});
   plan.cost_m = cost[goal];
   plan.frontier_cells = cluster_size[static_cast<std::size_t>(cluster[viewed])];
+  plan.frontier_in_doorway = is_pinch({static_cast<int>(viewed % w), static_cast<int>(viewed / w)});
   std::size_t anchor = 0;
   while (anchor + 1 < path.size()) {
     std::size_t next = anchor + 1;

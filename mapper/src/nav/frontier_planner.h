@@ -14,11 +14,21 @@
 namespace cogmap::mapper::nav {
 
 struct FrontierPlan {
-  Point2 goal{0.0, 0.0};           ///< where to drive: the cheapest place in view of a frontier
-  Point2 frontier{0.0, 0.0};       ///< the frontier cell it views (its centre), estimate frame
-  std::vector<Point2> waypoints;   ///< from the first leg's end to the goal
-  double cost_m = 0.0;             ///< weighted path cost to the goal
-  std::size_t frontier_cells = 0;  ///< size of the goal's cluster
+  Point2 goal{0.0, 0.0};             ///< where to drive: the cheapest place in view of a frontier
+  Point2 frontier{0.0, 0.0};         ///< the frontier cell it views (its centre), estimate frame
+  std::vector<Point2> waypoints;     ///< from the first leg's end to the goal
+  double cost_m = 0.0;               ///< weighted path cost to the goal
+  std::size_t frontier_cells = 0;    ///< size of the goal's cluster
+  bool frontier_in_doorway = false;  ///< the frontier cell lies in a gap narrower than 2·pinch_m
+};
+
+/// A frontier given up. A goal that failed bans every frontier cell within the radius; a look
+/// that left its frontier (from `seen_from`) bans only the cells no farther from there than
+/// the frontier itself: free cells beyond it that the look has just begun to reveal (the far
+/// side of a doorway) are new frontier, not the same one.
+struct BannedFrontier {
+  Point2 at{0.0, 0.0};
+  std::optional<Point2> seen_from;
 };
 
 /// The plan to the cheapest reachable frontier cluster from `from` (its heading prices the
@@ -26,7 +36,8 @@ struct FrontierPlan {
 /// frontier of min_frontier_cells is reachable. Frontier cells within `banned_radius_m` of a
 /// point in `banned` (goals given up) are ignored.
 std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2& from,
-                                             std::span<const Point2> banned, double banned_radius_m,
+                                             std::span<const BannedFrontier> banned,
+                                             double banned_radius_m,
                                              const FrontierOptions& options);
 
 }  // namespace cogmap::mapper::nav

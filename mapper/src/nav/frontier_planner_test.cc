@@ -253,15 +253,56 @@ TEST(FrontierPlanner, BannedFrontiersAreSkipped) {
       plan_to_frontier(map, {0.0, 0.0, 0.0}, {}, 0.0, FrontierOptions{});
   ASSERT_TRUE(first.has_value());
   ASSERT_GT(first->frontier.x(), 0.0);
-  const std::vector<Point2> banned = {first->frontier};
+  const std::vector<BannedFrontier> banned = {{first->frontier, std::nullopt}};
   const std::optional<FrontierPlan> second =
       plan_to_frontier(map, {0.0, 0.0, 0.0}, banned, 2.0, FrontierOptions{});
   ASSERT_TRUE(second.has_value());
   EXPECT_GT((second->frontier - first->frontier).norm(), 2.0);
   EXPECT_GE(second->frontier.norm(), 1.8);
   // Banning the whole rim leaves nothing.
-  const std::vector<Point2> all = {{0.0, 0.0}};
+  const std::vector<BannedFrontier> all = {{{0.0, 0.0}, std::nullopt}};
   EXPECT_FALSE(plan_to_frontier(map, {0.0, 0.0, 0.0}, all, 2.2, FrontierOptions{}).has_value());
+}
+
+// A closed room x -2.0 .. 0.8 m, y -1.0 .. 1.0 m, with a 1 m doorway in its east wall
+// (x = 1.0, y -0.4 .. 0.4) and beyond it the first 0.4 m of the next room seen (x 1.2 .. 1.4,
+// its side walls at y = ±0.6), unseen past x = 1.4: the map after a look through a door.
+ExploreMap looked_through_door_map() {
+  Scene scene;
+  scene.add_free(-10, -5, 4, 5);
+  scene.add_free(5, -2, 7, 2);
+  scene.add_open(8, -2, 8, 2);
+  return scene.build();
+}
+
+TEST(FrontierPlanner, ALookBansTheDoorButNotWhatItRevealedBeyond) {
+  const ExploreMap map = looked_through_door_map();
+  const Pose2 from{-1.0, 0.0, 0.0};
+  const Point2 door(1.0, 0.0);
+  const std::optional<FrontierPlan> open = plan_to_frontier(map, from, {}, 0.0, FrontierOptions{});
+  ASSERT_TRUE(open.has_value());
+  EXPECT_NEAR(open->frontier.x(), 1.4, 1e-9) << describe(*open);
+  EXPECT_TRUE(open->frontier_in_doorway) << describe(*open);
+  // A goal given up bans everything within the radius, the far side's frontier included.
+  const std::vector<BannedFrontier> failed = {{door, std::nullopt}};
+  EXPECT_FALSE(plan_to_frontier(map, from, failed, 0.6, FrontierOptions{}).has_value());
+  // A look from inside the room leaves the cells beyond the door (2.4 m from the viewer,
+  // the door 2.0 m) open...
+  const std::vector<BannedFrontier> looked = {{door, from.translation()}};
+  const std::optional<FrontierPlan> beyond =
+      plan_to_frontier(map, from, looked, 0.6, FrontierOptions{});
+  ASSERT_TRUE(beyond.has_value());
+  EXPECT_NEAR(beyond->frontier.x(), 1.4, 1e-9) << describe(*beyond);
+  // ...but one from the far side bans them: they lie between that viewer and the door.
+  const std::vector<BannedFrontier> from_far_side = {{door, Point2(2.4, 0.0)}};
+  EXPECT_FALSE(plan_to_frontier(map, from, from_far_side, 0.6, FrontierOptions{}).has_value());
+}
+
+TEST(FrontierPlanner, AFrontierInTheOpenIsNoDoorway) {
+  const std::optional<FrontierPlan> plan =
+      plan_to_frontier(disc_map(), {0.0, 0.0, 0.0}, {}, 0.0, FrontierOptions{});
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_FALSE(plan->frontier_in_doorway) << describe(*plan);
 }
 
 TEST(FrontierPlanner, LegsStayOnSeenFreeCellsAndAreBounded) {
