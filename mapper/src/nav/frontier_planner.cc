@@ -205,12 +205,19 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
     }
   }
   // The goal: the cheapest place in view of a frontier, counting the turn onto the path (a
-  // skid-steer base loses heading in every turn), among the clear ones first.
+  // skid-steer base loses heading in every turn), among the clear ones first; as a last resort
+  // (nothing else is left to explore) a place in a doorway the jambs' echoes painted narrower
+  // than the body: the door behaviour finds the real opening there by the live sonar.
   std::size_t goal = n;
-  for (const double need : {o.goal_clearance_m, o.min_goal_clearance_m}) {
+  const double tiers[3] = {o.goal_clearance_m, o.min_goal_clearance_m, o.doorway_goal_clearance_m};
+  for (int tier = 0; tier < 3; ++tier) {
+    const double need = tiers[tier];
+    const bool doorways_only = tier == 2;
+    if (doorways_only && !(need >= 0.0)) break;  // negative or NaN: no last resort
     double best = kInf;
     for (std::size_t i = 0; i < n; ++i) {
       if (views[i] < 0 || cost[i] == kInf || clear[i] < need) continue;
+      if (doorways_only && !is_pinch({static_cast<int>(i % w), static_cast<int>(i / w)})) continue;
       const double total =
           cost[i] + o.turn_cost_m * std::abs(wrap_angle_rad(departure[i] - from.theta_rad));
       if (total < best) {

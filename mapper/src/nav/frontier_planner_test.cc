@@ -298,6 +298,31 @@ TEST(FrontierPlanner, ALookBansTheDoorButNotWhatItRevealedBeyond) {
   EXPECT_FALSE(plan_to_frontier(map, from, from_far_side, 0.6, FrontierOptions{}).has_value());
 }
 
+// The same room with its doorway painted down to two cells (y 0.0 .. 0.2 at x = 1.0, as the
+// jambs' echoes paint a 1 m door), and 0.6 m of the far side seen (frontier at x = 1.6): no
+// place 0.35 m clear views that frontier from within 0.9 m.
+TEST(FrontierPlanner, ADoorwayPaintedNarrowIsTheLastResort) {
+  Scene scene;
+  scene.add_free(-10, -5, 4, 5);
+  scene.add_free(5, 0, 8, 1);
+  scene.add_open(9, 0, 9, 1);
+  const ExploreMap map = scene.build();
+  const Pose2 from{-1.0, 0.0, 0.0};
+  const std::optional<FrontierPlan> plan = plan_to_frontier(map, from, {}, 0.0, FrontierOptions{});
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_NEAR(plan->frontier.x(), 1.6, 1e-9) << describe(*plan);
+  EXPECT_NEAR(plan->goal.x(), 1.0, 1e-9) << describe(*plan);  // in the doorway itself
+  expect_walkable_legs(map, from, *plan, FrontierOptions{}.max_leg_m);
+  FrontierOptions no_last_resort;
+  no_last_resort.doorway_goal_clearance_m = -1.0;
+  EXPECT_FALSE(plan_to_frontier(map, from, {}, 0.0, no_last_resort).has_value());
+  // A frontier that a place 0.35 m clear views is taken the usual way, from that place.
+  const std::optional<FrontierPlan> open =
+      plan_to_frontier(looked_through_door_map(), from, {}, 0.0, FrontierOptions{});
+  ASSERT_TRUE(open.has_value());
+  EXPECT_LE(open->goal.x(), 0.6) << describe(*open);
+}
+
 TEST(FrontierPlanner, AFrontierInTheOpenIsNoDoorway) {
   const std::optional<FrontierPlan> plan =
       plan_to_frontier(disc_map(), {0.0, 0.0, 0.0}, {}, 0.0, FrontierOptions{});

@@ -379,14 +379,18 @@ struct FrontierOptions {
   double goal_clearance_m = 0.5;       ///< ...preferring places this clear of obstacles (the body's
                                        ///< half-diagonal 0.4 m + a cell's half); nearer ones only
                                        ///< when no such place views the frontier, and never
-  double min_goal_clearance_m = 0.35;  ///< nearer than this (half the body's width + 0.1 m)
-  double los_clearance_m = 0.4;        ///< a straight leg skips path cells while it keeps this
-                                       ///< far from obstacles (or as far as the path did)
-  double max_leg_m = 4.0;              ///< ...and is at most this long
-  double turn_cost_m = 0.6;            ///< turning onto the path costs this much travel per
-                                       ///< radian: a skid-steer base loses 1-2 % of every turn in
-                                       ///< heading, so a frontier behind must be ~2 m nearer
-  double departure_m = 0.3;            ///< ...the path's direction taken this far out
+  double min_goal_clearance_m = 0.35;  ///< nearer than this (half the body's width + 0.1 m),
+                                       ///< except as a last resort, when no place that clear
+                                       ///< views any frontier: then places in a doorway this
+  double doorway_goal_clearance_m = 0.15;  ///< clear (a door the jambs' echoes painted down to
+                                           ///< 0.4 m: next to its obstacle cells; negative: off)
+  double los_clearance_m = 0.4;            ///< a straight leg skips path cells while it keeps this
+                                           ///< far from obstacles (or as far as the path did)
+  double max_leg_m = 4.0;                  ///< ...and is at most this long
+  double turn_cost_m = 0.6;                ///< turning onto the path costs this much travel per
+                             ///< radian: a skid-steer base loses 1-2 % of every turn in
+                             ///< heading, so a frontier behind must be ~2 m nearer
+  double departure_m = 0.3;  ///< ...the path's direction taken this far out
 };
 
 /// The explorer (thesis §1.1.4 and §2.1.1, after Kuipers and Byun): drive to the nearest
