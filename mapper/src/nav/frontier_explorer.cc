@@ -161,14 +161,14 @@ class FrontierExplorer final : public Controller {
   NavTrace trace_;
   bool finished_ = false;
   ExploreBudget budget_;
-  std::optional<Point2> goal_;  // where the robot drives to see...
-  Point2 target_{0.0, 0.0};     // ...this frontier cell
-  double progress_s_ = 0.0;     // when the give-up clock last restarted
+  std::optional<Point2> goal_;      // where the robot drives to see...
+  Point2 target_{0.0, 0.0};         // ...this frontier cell,
+  bool target_in_doorway_ = false;  // which lies in a doorway (a look bans only this side)
+  double progress_s_ = 0.0;         // when the give-up clock last restarted
   double best_m_ = std::numeric_limits<double>::infinity();  // nearest to the goal so far
   std::size_t seen_at_progress_ = 0;
   std::size_t skipped_seen_ = 0;
   std::size_t recoveries_seen_ = 0;
-  bool target_in_doorway_ = false;      // ...which lies in a doorway
   std::vector<BannedFrontier> banned_;  // frontier cells given up or looked at in vain
   std::optional<double> arrived_s_;     // arrived at the goal: holding still since...
   std::size_t arrived_readings_ = 0;    // ...with this many readings integrated

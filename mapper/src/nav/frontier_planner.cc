@@ -82,6 +82,9 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
                                              std::span<const BannedFrontier> banned,
                                              double banned_radius_m, const FrontierOptions& o) {
   const int w = map.width(), h = map.height();
+  auto cell_at = [w](std::size_t i) {
+    return Cell{static_cast<int>(i % w), static_cast<int>(i / w)};
+  };
   const Cell start = map.cell_of(from.translation());
   if (w == 0 || !map.inside(start)) return std::nullopt;
   const std::size_t n = static_cast<std::size_t>(w) * h;
@@ -122,7 +125,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
       const std::size_t j = stack.back();
       stack.pop_back();
       ++size;
-      const Cell c{static_cast<int>(j % w), static_cast<int>(j / w)};
+      const Cell c = cell_at(j);
       for (int k = 0; k < 8; ++k) {
         const Cell m{c.x + kDx[k], c.y + kDy[k]};
         if (!map.inside(m)) continue;
@@ -153,7 +156,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
                             static_cast<std::size_t>(o.min_frontier_cells)) {
       continue;
     }
-    const Cell f{static_cast<int>(i % w), static_cast<int>(i / w)};
+    const Cell f = cell_at(i);
     for (int dy = -view_cells; dy <= view_cells; ++dy) {
       for (int dx = -view_cells; dx <= view_cells; ++dx) {
         const Cell c{f.x + dx, f.y + dy};
@@ -186,7 +189,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
     const auto [c_cost, i] = open.top();
     open.pop();
     if (c_cost > cost[i]) continue;
-    const Cell c{static_cast<int>(i % w), static_cast<int>(i / w)};
+    const Cell c = cell_at(i);
     const bool here_pinch = is_pinch(c);
     for (int k = 0; k < 8; ++k) {
       const Cell m{c.x + kDx[k], c.y + kDy[k]};
@@ -217,7 +220,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
     double best = kInf;
     for (std::size_t i = 0; i < n; ++i) {
       if (views[i] < 0 || cost[i] == kInf || clear[i] < need) continue;
-      if (doorways_only && !is_pinch({static_cast<int>(i % w), static_cast<int>(i / w)})) continue;
+      if (doorways_only && !is_pinch(cell_at(i))) continue;
       const double total =
           cost[i] + o.turn_cost_m * std::abs(wrap_angle_rad(departure[i] - from.theta_rad));
       if (total < best) {
@@ -232,7 +235,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   // The path, start to goal, then straight legs over it.
   std::vector<Cell> path;
   for (std::int64_t i = static_cast<std::int64_t>(goal); i >= 0; i = parent[i]) {
-    path.push_back({static_cast<int>(i % w), static_cast<int>(i / w)});
+    path.push_back(cell_at(static_cast<std::size_t>(i)));
   }
   std::reverse(path.begin(), path.end());
   auto leg_clear = [&](std::size_t a, std::size_t b) {
@@ -252,10 +255,10 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   FrontierPlan plan;
   const auto viewed = static_cast<std::size_t>(views[goal]);
   plan.goal = map.center_of(path.back());
-  plan.frontier = map.center_of({static_cast<int>(viewed % w), static_cast<int>(viewed / w)});
+  plan.frontier = map.center_of(cell_at(viewed));
   plan.cost_m = cost[goal];
   plan.frontier_cells = cluster_size[static_cast<std::size_t>(cluster[viewed])];
-  plan.frontier_in_doorway = is_pinch({static_cast<int>(viewed % w), static_cast<int>(viewed / w)});
+  plan.frontier_in_doorway = is_pinch(cell_at(viewed));
   std::size_t anchor = 0;
   while (anchor + 1 < path.size()) {
     std::size_t next = anchor + 1;

@@ -264,16 +264,19 @@ TEST(FrontierPlanner, BannedFrontiersAreSkipped) {
   EXPECT_FALSE(plan_to_frontier(map, {0.0, 0.0, 0.0}, all, 2.2, FrontierOptions{}).has_value());
 }
 
-// A closed room x -2.0 .. 0.8 m, y -1.0 .. 1.0 m, with a 1 m doorway in its east wall
-// (x = 1.0, y -0.4 .. 0.4) and beyond it the first 0.4 m of the next room seen (x 1.2 .. 1.4,
-// its side walls at y = ±0.6), unseen past x = 1.4: the map after a look through a door.
-ExploreMap looked_through_door_map() {
+// A closed room x -2.0 .. 0.8 m, y -1.0 .. 1.0 m, whose east wall (x = 1.0) has a doorway of
+// cells door_y0 .. door_y1, and beyond it the next room seen as far as cell far_x (its side
+// walls one cell either side of the doorway), unseen past it: the map after a look through.
+ExploreMap door_map(int door_y0, int door_y1, int far_x) {
   Scene scene;
   scene.add_free(-10, -5, 4, 5);
-  scene.add_free(5, -2, 7, 2);
-  scene.add_open(8, -2, 8, 2);
+  scene.add_free(5, door_y0, far_x, door_y1);
+  scene.add_open(far_x + 1, door_y0, far_x + 1, door_y1);
   return scene.build();
 }
+
+// A 1 m doorway (y -0.4 .. 0.4) with the first 0.4 m beyond it seen (frontier at x = 1.4).
+ExploreMap looked_through_door_map() { return door_map(-2, 2, 7); }
 
 TEST(FrontierPlanner, ALookBansTheDoorButNotWhatItRevealedBeyond) {
   const ExploreMap map = looked_through_door_map();
@@ -302,11 +305,7 @@ TEST(FrontierPlanner, ALookBansTheDoorButNotWhatItRevealedBeyond) {
 // jambs' echoes paint a 1 m door), and 0.6 m of the far side seen (frontier at x = 1.6): no
 // place 0.35 m clear views that frontier from within 0.9 m.
 TEST(FrontierPlanner, ADoorwayPaintedNarrowIsTheLastResort) {
-  Scene scene;
-  scene.add_free(-10, -5, 4, 5);
-  scene.add_free(5, 0, 8, 1);
-  scene.add_open(9, 0, 9, 1);
-  const ExploreMap map = scene.build();
+  const ExploreMap map = door_map(0, 1, 8);
   const Pose2 from{-1.0, 0.0, 0.0};
   const std::optional<FrontierPlan> plan = plan_to_frontier(map, from, {}, 0.0, FrontierOptions{});
   ASSERT_TRUE(plan.has_value());
