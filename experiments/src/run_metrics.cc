@@ -1,5 +1,8 @@
 #include "cogmap/experiments/run_metrics.h"
 
+#include <cmath>
+#include <numbers>
+
 #include <nlohmann/json.hpp>
 
 namespace cogmap::experiments {
@@ -73,6 +76,17 @@ Json breakdown_json(const ErrorBreakdown& b) {
 
 }  // namespace
 
+RoomLocalizationReport room_localization_report(const mapper::Localization& l) {
+  constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+  RoomLocalizationReport r;
+  r.measured_rotation_deg = l.measured_rotation_rad * kDegPerRad;
+  r.measurement_sd_deg = l.measurement_sigma_rad * kDegPerRad;
+  if (std::isfinite(l.prior_sigma_rad)) r.prior_sd_deg = l.prior_sigma_rad * kDegPerRad;
+  r.gain = l.gain;
+  r.applied = l.applied;
+  return r;
+}
+
 std::string metrics_json_text(const RunMetrics& m) {
   Json j;
   j["experiment"] = {{"name", m.name},
@@ -127,6 +141,15 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"total", m.rejected.total()}}}};
   Json rooms = Json::array();
   for (const RoomReport& r : m.rooms) {
+    Json localization(nullptr);
+    if (r.localization) {
+      const RoomLocalizationReport& l = *r.localization;
+      localization = {{"measured_rotation_deg", l.measured_rotation_deg},
+                      {"measurement_sd_deg", l.measurement_sd_deg},
+                      {"prior_sd_deg", opt(l.prior_sd_deg)},
+                      {"gain", l.gain},
+                      {"applied", l.applied}};
+    }
     rooms.push_back({{"id", r.size.id},
                      {"parent", r.parent ? Json(*r.parent) : Json(nullptr)},
                      {"walls", r.size.wall_count},
@@ -135,6 +158,7 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"polyline_bytes", r.size.polyline_bytes},
                      {"grid_bytes", r.size.grid_bytes},
                      {"heading_correction_deg", r.heading_correction_deg},
+                     {"localization", localization},
                      {"start_time_s", r.start_time_s},
                      {"end_time_s", r.end_time_s}});
   }

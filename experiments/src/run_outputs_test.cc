@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <nlohmann/json.hpp>
@@ -109,6 +110,35 @@ TEST(RunMetrics, PerRoomMappingTimeIsInMillisecondsUnderTiming) {
   EXPECT_DOUBLE_EQ(j["timing"]["room_cpu_ms"][1].get<double>(), 0.5);
   m.room_cpu_s.clear();
   EXPECT_TRUE(nlohmann::json::parse(metrics_json_text(m))["timing"]["room_cpu_ms"].empty());
+}
+
+TEST(RunMetrics, EachRoomSaysWhatEmMeasuredInDegrees) {
+  mapper::Localization fix;
+  fix.measured_rotation_rad = -0.1;
+  fix.measurement_sigma_rad = 0.02;
+  fix.prior_sigma_rad = 0.04;
+  fix.gain = 0.8;
+  fix.applied = true;
+  const RoomLocalizationReport r = room_localization_report(fix);
+  EXPECT_NEAR(r.measured_rotation_deg, -0.1 * 180.0 / M_PI, 1e-12);
+  EXPECT_NEAR(r.measurement_sd_deg, 0.02 * 180.0 / M_PI, 1e-12);
+  ASSERT_TRUE(r.prior_sd_deg.has_value());
+  EXPECT_NEAR(*r.prior_sd_deg, 0.04 * 180.0 / M_PI, 1e-12);
+  // No prior (the thesis's EM): none reported, not an infinity JSON cannot hold.
+  fix.prior_sigma_rad = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(room_localization_report(fix).prior_sd_deg.has_value());
+
+  RunMetrics m;
+  m.rooms.resize(2);
+  m.rooms[1].localization = r;
+  const auto j = nlohmann::json::parse(metrics_json_text(m));
+  EXPECT_TRUE(j["rooms"][0]["localization"].is_null());  // the first room: nothing to match
+  const auto& l = j["rooms"][1]["localization"];
+  EXPECT_DOUBLE_EQ(l["measured_rotation_deg"].get<double>(), r.measured_rotation_deg);
+  EXPECT_DOUBLE_EQ(l["measurement_sd_deg"].get<double>(), r.measurement_sd_deg);
+  EXPECT_DOUBLE_EQ(l["prior_sd_deg"].get<double>(), *r.prior_sd_deg);
+  EXPECT_DOUBLE_EQ(l["gain"].get<double>(), 0.8);
+  EXPECT_TRUE(l["applied"].get<bool>());
 }
 
 }  // namespace

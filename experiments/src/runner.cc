@@ -215,7 +215,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   std::vector<mapper::Mapper::MapSegment> corrected, odometry;
   std::vector<RoomReport> room_reports;
   std::vector<std::pair<int, mapper::Point2>> labels;
-  mapper.set_room_listener([&](const mapper::Asr& asr, const mapper::AsrTrace& trace) {
+  mapper.set_room_listener([&](const mapper::Asr& asr, const mapper::AsrTrace& trace,
+                               const std::optional<mapper::Localization>& localized) {
     mapper::Mapper::append_room_segments(asr, true, corrected);
     mapper::Mapper::append_room_segments(asr, false, odometry);
     RoomReport report;
@@ -227,6 +228,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                    asr.grid_bytes};
     report.parent = asr.parent;
     report.heading_correction_deg = asr.heading_correction_rad * kDegPerRad;
+    if (localized) report.localization = room_localization_report(*localized);
     report.start_time_s = asr.start_time_s;
     report.end_time_s = asr.end_time_s;
     room_reports.push_back(report);

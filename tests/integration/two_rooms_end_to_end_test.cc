@@ -64,6 +64,20 @@ TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
   }
   EXPECT_EQ(bd["lines"]["count"].get<int>(), map["error_samples"].get<int>());
   EXPECT_EQ(bd["heading"]["rooms"].get<int>(), 2);
+  // What EM measured: nothing for the first room; for the second, a measurement with its sd
+  // and the odometry prior, and the rotation applied is the prior's share of it (Kalman gain).
+  const Json& rooms = a["rooms"];
+  ASSERT_EQ(rooms.size(), 2u);
+  EXPECT_TRUE(rooms[0]["localization"].is_null());
+  const Json& em = rooms[1]["localization"];
+  ASSERT_TRUE(em.is_object());
+  EXPECT_GT(em["measurement_sd_deg"].get<double>(), 0.0);
+  EXPECT_GT(em["prior_sd_deg"].get<double>(), 0.0);
+  const double applied_deg =
+      em["applied"].get<bool>()
+          ? em["gain"].get<double>() * em["measured_rotation_deg"].get<double>()
+          : 0.0;
+  EXPECT_NEAR(rooms[1]["heading_correction_deg"].get<double>(), applied_deg, 1e-9);
 
   // Same experiment, same seed: every block except timing is identical bit for bit, and so
   // are the trajectory and the map.

@@ -203,9 +203,10 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   asr.odometry_pose = correction.inverse();  // local (estimate) -> odometry-only world
 
   Pose2 room_correction;  // identity
+  std::optional<Localization> localized;
   if (options.localization == LocalizationKind::kEm && !resident.empty()) {
     const auto em_start = std::chrono::steady_clock::now();
-    const Localization fix = localize(asr, trace_in);
+    const Localization& fix = localized.emplace(localize(asr, trace_in));
     stats.localization_time_s += seconds_since(em_start);
     if (options.localizer.odometry_prior && std::isfinite(fix.prior_sigma_rad)) {
       const double prior_var = fix.prior_sigma_rad * fix.prior_sigma_rad;
@@ -242,7 +243,7 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   if (listener) {
     AsrTrace trace = trace_in;
     trace.asr_id = asr.id;
-    listener(asr, trace);
+    listener(asr, trace, localized);
   }
   rejected_in_finished_rooms = rejected_in_finished_rooms + room.grid().rejected();
   resident.push_back(std::move(asr));

@@ -103,11 +103,13 @@ TEST(Mapper, OneRoomBecomesOneAsrOnTheTrueWalls) {
   MemoryAsrStore store;
   Mapper mapper(options, robot, store, Pose2{});
   int rooms_seen = 0;
-  mapper.set_room_listener([&](const Asr& asr, const AsrTrace& trace) {
-    ++rooms_seen;
-    EXPECT_EQ(trace.asr_id, asr.id);
-    EXPECT_FALSE(trace.extracted.empty());
-  });
+  mapper.set_room_listener(
+      [&](const Asr& asr, const AsrTrace& trace, const std::optional<Localization>& localized) {
+        ++rooms_seen;
+        EXPECT_FALSE(localized.has_value());  // localisation off
+        EXPECT_EQ(trace.asr_id, asr.id);
+        EXPECT_FALSE(trace.extracted.empty());
+      });
   for (const SensorFrame& f : frames) mapper.process(f);
   const auto id = mapper.finish();
   ASSERT_TRUE(id.has_value());

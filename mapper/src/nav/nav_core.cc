@@ -139,8 +139,17 @@ VelocityCommand NavCore::spin_guarded(const VelocityCommand& cmd) const {
   const double away_rad = strike->x() >= 0.0 ? heading_rad_ + std::numbers::pi : heading_rad_;
   const double half_lane = 0.5 * robot_.width_m + s.spin_guard_margin_m;
   const double free_m = lane_clearance_m(field_.points(), away_rad, half_lane, robot_.length_m);
-  if (free_m <= s.spin_guard_margin_m) return cmd;  // boxed in: the turn is all there is
-  return {strike->x() >= 0.0 ? -s.spin_escape_mps : s.spin_escape_mps, 0.0};
+  if (free_m > s.spin_escape_clearance_m) {
+    return {strike->x() >= 0.0 ? -s.spin_escape_mps : s.spin_escape_mps, 0.0};
+  }
+  // No room to move away: the long way round, if that turn strikes nothing; boxed in both
+  // ways, the turn as asked is all there is.
+  const int other = cmd.w_radps > 0.0 ? -1 : 1;
+  if (!spin_strike(field_.points(), heading_rad_, other, robot_, s.spin_guard_margin_m,
+                   deg_to_rad(s.spin_guard_deg))) {
+    return {cmd.v_mps, -cmd.w_radps};
+  }
+  return cmd;
 }
 
 VelocityCommand NavCore::sent(const VelocityCommand& requested) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "nav/nav_core.h"
@@ -100,6 +101,63 @@ TEST(SpinGuard, BacksAwayBeforeATurnThatWouldStrikeAndTurnsTheOtherWayFreely) {
   const VelocityCommand blind = u.core.drive_direct(u.input, 120.0 * kDeg, speed, NavMode::kDirect);
   EXPECT_DOUBLE_EQ(blind.v_mps, 0.0);
   EXPECT_DOUBLE_EQ(blind.w_radps, u.core.max_turn_radps());
+}
+
+/// The left echo asks for a move back (as above) while a rear transducer hears something
+/// behind; standing at (0.05, 0.05) puts a near rear echo's cell centre 0.087 m behind the
+/// bumper: beyond the guard's margin (0.04 m), within a cell's uncertainty of it.
+struct LeftAndRearEcho {
+  RobotGeometry robot = p2at_geometry();
+  SensorFrame frame;
+  NavInput input;
+  NavCore core{CoreOptions{}};
+
+  LeftAndRearEcho(int rear_sonar, double rear_range_m) {
+    frame.sonar = {{0, 0.2, true, 0.0}, {rear_sonar, rear_range_m, true, 0.0}};
+    input.frame = &frame;
+    input.robot = &robot;
+    input.pose = Pose2{0.05, 0.05, 0.0};
+    core.sense(input);
+  }
+  /// The lane behind as the sensed points place it: the nearest point behind the rear bumper.
+  double behind_m() const {
+    const double half_lane = 0.5 * robot.width_m + CoreOptions{}.safety.spin_guard_margin_m;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const ObstaclePoint& p : core.field().points()) {
+      if (p.offset_m.x() < 0.0 && std::abs(p.offset_m.y()) <= half_lane) {
+        nearest = std::min(nearest, -p.offset_m.x() - 0.5 * robot.length_m);
+      }
+    }
+    return nearest;
+  }
+  VelocityCommand turn_left_120() {
+    return core.drive_direct(input, 120.0 * kDeg, core.speed_mps(), NavMode::kDirect);
+  }
+};
+
+TEST(SpinGuard, EscapesOnlyIntoALaneClearByMoreThanAPointsUncertainty) {
+  const SafetyOptions safety = CoreOptions{}.safety;
+  // Behind clear (transducer 11, -170°, echo at 0.3 m): back away first.
+  LeftAndRearEcho clear(11, 0.30);
+  EXPECT_GT(clear.behind_m(), safety.spin_escape_clearance_m);
+  const VelocityCommand back = clear.turn_left_120();
+  EXPECT_DOUBLE_EQ(back.v_mps, -safety.spin_escape_mps);
+  EXPECT_DOUBLE_EQ(back.w_radps, 0.0);
+  // Behind within a cell of the bumper (transducer 12, 170°, at 0.14 m): no move back; the
+  // clockwise turn strikes nothing, so the robot goes the long way round.
+  LeftAndRearEcho near(12, 0.14);
+  EXPECT_GT(near.behind_m(), safety.spin_guard_margin_m);
+  EXPECT_LE(near.behind_m(), safety.spin_escape_clearance_m);
+  const VelocityCommand long_way = near.turn_left_120();
+  EXPECT_DOUBLE_EQ(long_way.v_mps, 0.0);
+  EXPECT_DOUBLE_EQ(long_way.w_radps, -near.core.max_turn_radps());
+  // Behind near and struck by the clockwise turn too (transducer 11 at 0.14 m): boxed in, the
+  // turn goes as asked.
+  LeftAndRearEcho boxed(11, 0.14);
+  EXPECT_LE(boxed.behind_m(), safety.spin_escape_clearance_m);
+  const VelocityCommand as_asked = boxed.turn_left_120();
+  EXPECT_DOUBLE_EQ(as_asked.v_mps, 0.0);
+  EXPECT_DOUBLE_EQ(as_asked.w_radps, boxed.core.max_turn_radps());
 }
 
 }  // namespace

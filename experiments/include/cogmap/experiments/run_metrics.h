@@ -13,14 +13,29 @@
 #include "cogmap/experiments/metrics.h"
 #include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/mapper/grid/grid_updater.h"
+#include "cogmap/mapper/localization/localizer.h"
 
 namespace cogmap::experiments {
+
+/// What EM measured for one room against the rooms before it (docs/algorithms.md, §3.1.9
+/// and "Odometry prior on the rotation"): enough to check its claimed sd against the truth.
+struct RoomLocalizationReport {
+  double measured_rotation_deg = 0.0;  ///< EM's answer before the prior
+  double measurement_sd_deg = 0.0;     ///< the sd EM claims for it
+  std::optional<double> prior_sd_deg;  ///< odometry's prior on the rotation (none: no prior)
+  double gain = 0.0;                   ///< the share of the measurement applied
+  bool applied = false;                ///< false: too little wall, too big, or gated out
+};
+
+/// The report of EM's answer, in degrees.
+RoomLocalizationReport room_localization_report(const mapper::Localization& l);
 
 /// One finished room as reported in metrics.json "rooms".
 struct RoomReport {
   RoomSize size;
   std::optional<int> parent;
   double heading_correction_deg = 0.0;  ///< EM rotation applied about the reference point
+  std::optional<RoomLocalizationReport> localization;  ///< none: the first room, or EM off
   double start_time_s = 0.0;
   double end_time_s = 0.0;
 };

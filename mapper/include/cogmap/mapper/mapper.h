@@ -55,9 +55,11 @@ struct MapperStats {
 
 class Mapper {
  public:
-  /// Called once per finished room with the ASR (already localised and stored) and the trace
-  /// of its pipeline stages; the trace is dropped after the call (bounded memory).
-  using RoomListener = std::function<void(const Asr&, const AsrTrace&)>;
+  /// Called once per finished room with the ASR (already localised and stored), the trace of
+  /// its pipeline stages (dropped after the call: bounded memory) and what EM measured for it
+  /// (none for the first room, or with localisation off).
+  using RoomListener =
+      std::function<void(const Asr&, const AsrTrace&, const std::optional<Localization>&)>;
 
   /// `start_pose` places the odometry frame in the world (the known start pose).
   Mapper(const MapperOptions& options, const RobotGeometry& robot, AsrStore& store,

@@ -80,6 +80,12 @@ struct SafetyOptions {
       0.04;  ///< points are 0.1 m cell centres: a face may lie 0.05 m nearer
   double spin_max_speed_mps = 0.05;  ///< slower than this counts as turning on the spot
   double spin_escape_mps = 0.1;      ///< the move away, either way along the axis
+  /// ...only into a lane clear by more than this from the bumper: a sensed point is a 0.1 m
+  /// cell's centre (the face may be 0.05 m nearer), plus spin_guard_margin_m and a cycle's
+  /// travel (0.01 m). 0.04 (the margin alone) drove the bumper into faces 0.06-0.09 m off.
+  /// Refused, the turn goes the long way round if that strikes nothing (docs/algorithms.md,
+  /// "Turning on the spot").
+  double spin_escape_clearance_m = 0.1;
 };
 
 /// Stuck detection and the back-off-and-turn recovery.
