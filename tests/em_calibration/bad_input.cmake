@@ -1,7 +1,0 @@
-execute_process(COMMAND ${PYTHON} ${SCRIPT} ${RUN} RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "em-calibration exited ${rc} (want 2): ${err}")
-endif()
-if(NOT err MATCHES "no_trajectory/trajectory.csv")
-  message(FATAL_ERROR "the error does not name the file: ${err}")
-endif()
