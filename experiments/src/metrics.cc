@@ -144,9 +144,13 @@ double quantile(std::vector<double>& values, double q) {
 
 MapAccuracy evaluate_map(std::span<const Segment> map, std::span<const Segment> truth,
                          std::span<const Point2> visible, const MapMetricsOptions& options) {
+  return evaluate_map(map, SegmentIndex(truth, options.index_cell_m), visible, options);
+}
+
+MapAccuracy evaluate_map(std::span<const Segment> map, const SegmentIndex& truth_index,
+                         std::span<const Point2> visible, const MapMetricsOptions& options) {
   MapAccuracy out;
   out.segment_count = map.size();
-  const SegmentIndex truth_index(truth, options.index_cell_m);
   std::vector<double> errors;
   double spurious_m = 0.0;
   // Visited, not materialised: the samples would sit in memory beside their errors.

@@ -159,6 +159,16 @@ TEST(MapMetrics, OffsetMapHasThatError) {
   EXPECT_NEAR(*b.wall_error_median_m, 0.25, 1e-12);
   EXPECT_DOUBLE_EQ(*b.wall_coverage, 0.0);
   EXPECT_DOUBLE_EQ(*b.spurious_fraction, 0.0);
+  // The same scores from an index of the truth built once, with cells of another size.
+  const SegmentIndex truth_index(truth, 0.37);
+  const MapAccuracy c = evaluate_map(map, truth_index, visible, opt);
+  EXPECT_NEAR(*c.wall_error_median_m, 0.1, 1e-12);
+  EXPECT_NEAR(*c.wall_error_p90_m, 0.1, 1e-12);
+  EXPECT_DOUBLE_EQ(*c.spurious_fraction, 0.0);
+  EXPECT_DOUBLE_EQ(*c.wall_coverage, 1.0);
+  const MapAccuracy d = evaluate_map(far, truth_index, visible, opt);
+  EXPECT_NEAR(*d.wall_error_median_m, 0.25, 1e-12);
+  EXPECT_DOUBLE_EQ(*d.wall_coverage, 0.0);
 }
 
 TEST(MapMetrics, SpuriousSegmentOfKnownLength) {

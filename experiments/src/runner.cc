@@ -421,11 +421,13 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     mapper::io::write_file_atomic(out / "map.svg", map_svg(svg), durability);
     if (truth) {
       const std::vector<mapper::Point2> visible = visible_truth->finish();
-      // The two maps are scored on the two cores (pure functions: the same result either way).
+      // The two maps are scored on the two cores (pure functions: the same result either way),
+      // against the breakdown's index of the true surfaces.
+      const SegmentIndex& truth_index = breakdown->truth_index();
       auto odometry_score = std::async(std::launch::async, [&] {
-        return evaluate_map(segments_of(odometry), truth->surfaces, visible, metric_options);
+        return evaluate_map(segments_of(odometry), truth_index, visible, metric_options);
       });
-      m.map = evaluate_map(segments_of(corrected), truth->surfaces, visible, metric_options);
+      m.map = evaluate_map(segments_of(corrected), truth_index, visible, metric_options);
       m.map_odometry = odometry_score.get();
     }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace cogmap::experiments {
 namespace {
@@ -60,10 +61,13 @@ SegmentIndex::SegmentIndex(std::span<const mapper::Segment> segments, double cel
   origin_y_m_ = min_y - cell_m_;
   width_ = static_cast<int>(std::floor(span_x / cell_m_)) + 3;
   height_ = static_cast<int>(std::floor(span_y / cell_m_)) + 3;
-  buckets_.assign(static_cast<std::size_t>(width_) * height_, {});
   // A segment goes into every cell it touches: a cell is touched when the segment passes
-  // within half a diagonal of its centre (a tiny superset, which keeps queries exact).
+  // within half a diagonal of its centre (a tiny superset, which keeps queries exact). The
+  // (cell, segment) pairs are listed segment by segment, then counted into one flat array by
+  // cell (a stable counting sort: each cell lists its segments in increasing order).
   const double reach = cell_m_ * std::sqrt(0.5) * (1.0 + 1e-9) + 1e-12;
+  const std::size_t cells = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (cell, segment)
   for (std::size_t i = 0; i < segments_.size(); ++i) {
     const auto& s = segments_[i];
     const Cell lo = cell_of({std::min(s.a.x(), s.b.x()), std::min(s.a.y(), s.b.y())});
@@ -72,12 +76,18 @@ SegmentIndex::SegmentIndex(std::span<const mapper::Segment> segments, double cel
       for (int x = std::max(0, lo.x - 1); x <= std::min(width_ - 1, hi.x + 1); ++x) {
         const Point2 center(origin_x_m_ + (x + 0.5) * cell_m_, origin_y_m_ + (y + 0.5) * cell_m_);
         if (mapper::distance_to_segment_m(center, s) <= reach) {
-          buckets_[static_cast<std::size_t>(y) * width_ + x].push_back(
-              static_cast<std::uint32_t>(i));
+          pairs.emplace_back(static_cast<std::uint32_t>(static_cast<std::size_t>(y) * width_ + x),
+                             static_cast<std::uint32_t>(i));
         }
       }
     }
   }
+  bucket_start_.assign(cells + 1, 0);
+  for (const auto& [cell, i] : pairs) ++bucket_start_[cell + 1];
+  for (std::size_t c = 0; c < cells; ++c) bucket_start_[c + 1] += bucket_start_[c];
+  bucket_items_.resize(pairs.size());
+  std::vector<std::uint32_t> next(bucket_start_.begin(), bucket_start_.end() - 1);
+  for (const auto& [cell, i] : pairs) bucket_items_[next[cell]++] = i;
 }
 
 SegmentIndex::Cell SegmentIndex::cell_of(const Point2& p) const {
@@ -85,9 +95,10 @@ SegmentIndex::Cell SegmentIndex::cell_of(const Point2& p) const {
           static_cast<int>(std::floor((p.y() - origin_y_m_) / cell_m_))};
 }
 
-const std::vector<std::uint32_t>* SegmentIndex::bucket(int x, int y) const {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return nullptr;
-  return &buckets_[static_cast<std::size_t>(y) * width_ + x];
+std::span<const std::uint32_t> SegmentIndex::bucket(int x, int y) const {
+  if (x < 0 || y < 0 || x >= width_ || y >= height_) return {};
+  const std::size_t c = static_cast<std::size_t>(y) * width_ + x;
+  return {bucket_items_.data() + bucket_start_[c], bucket_items_.data() + bucket_start_[c + 1]};
 }
 
 double SegmentIndex::nearest_distance_m(const Point2& p) const {
@@ -97,10 +108,8 @@ double SegmentIndex::nearest_distance_m(const Point2& p) const {
   const int max_ring = std::max(
       {std::abs(c.x), std::abs(c.x - (width_ - 1)), std::abs(c.y), std::abs(c.y - (height_ - 1))});
   auto visit = [&](int x, int y) {
-    if (const auto* b = bucket(x, y)) {
-      for (const std::uint32_t i : *b) {
-        best = std::min(best, mapper::distance_to_segment_m(p, segments_[i]));
-      }
+    for (const std::uint32_t i : bucket(x, y)) {
+      best = std::min(best, mapper::distance_to_segment_m(p, segments_[i]));
     }
   };
   for (int r = 0; r <= max_ring; ++r) {
@@ -127,7 +136,7 @@ bool SegmentIndex::any_within_m(const Point2& p, double radius_m) const {
   const Cell hi = cell_of({p.x() + radius_m, p.y() + radius_m});
   for (int y = std::max(0, lo.y); y <= std::min(height_ - 1, hi.y); ++y) {
     for (int x = std::max(0, lo.x); x <= std::min(width_ - 1, hi.x); ++x) {
-      for (const std::uint32_t i : *bucket(x, y)) {
+      for (const std::uint32_t i : bucket(x, y)) {
         if (mapper::distance_to_segment_m(p, segments_[i]) <= radius_m) return true;
       }
     }
@@ -152,11 +161,9 @@ bool SegmentIndex::blocked(const Point2& a, const Point2& b, std::size_t exclude
   const double t_delta_y = dy != 0 ? 1.0 / std::abs(dy) : inf;
   const int max_steps = std::abs(end_x - ix) + std::abs(end_y - iy) + 2;
   for (int step = 0; step <= max_steps; ++step) {
-    if (const auto* cell = bucket(ix, iy)) {
-      for (const std::uint32_t i : *cell) {
-        if (i == exclude) continue;
-        if (segments_intersect(a, b, segments_[i].a, segments_[i].b)) return true;
-      }
+    for (const std::uint32_t i : bucket(ix, iy)) {
+      if (i == exclude) continue;
+      if (segments_intersect(a, b, segments_[i].a, segments_[i].b)) return true;
     }
     if (ix == end_x && iy == end_y) break;
     if (t_max_x < t_max_y) {

@@ -181,8 +181,7 @@ Localization Mapper::Impl::localize(const Asr& asr, const AsrTrace& trace) const
 std::optional<int> Mapper::Impl::finish_room(double time_s,
                                              const std::optional<BoundaryEvent>& leaving) {
   const auto build_start = std::chrono::steady_clock::now();
-  const AsrTrace trace_in =
-      build_room_polylines(room.grid().histogram(), room.path(), options.builder);
+  AsrTrace trace_in = build_room_polylines(room.grid().histogram(), room.path(), options.builder);
   stats.build_time_s += seconds_since(build_start);
 
   Asr asr;
@@ -241,9 +240,8 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   }
   ++stats.rooms;
   if (listener) {
-    AsrTrace trace = trace_in;
-    trace.asr_id = asr.id;
-    listener(asr, trace, localized);
+    trace_in.asr_id = asr.id;  // the trace is not needed after this: no copy of its grids
+    listener(asr, trace_in, localized);
   }
   rejected_in_finished_rooms = rejected_in_finished_rooms + room.grid().rejected();
   resident.push_back(std::move(asr));

@@ -19,13 +19,27 @@ bool ObstacleMemory::has_echoes() const {
 void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
                                const RobotGeometry& robot) {
   const double now = frame.time_s;
-  // Contacts outlive echoes, so the deque is not sorted by expiry: filter it whole. A clock
+  collect_clearing_beams(frame, pose, robot);
+  // One pass over the memory forgets the expired hits and the echoes this frame's beams saw
+  // through (a hit goes if any beam clears it, so the order of the tests does not matter).
+  // Contacts outlive echoes, so the deque is not sorted by expiry: it is filtered whole. A clock
   // that jumped backwards (a new log) also invalidates everything remembered.
+  const double tan_half = std::tan(options_.clear_half_angle_deg * std::numbers::pi / 180.0);
   std::erase_if(hits_, [&](const Hit& h) {
-    return h.expires_s <= now || h.expires_s > now + options_.contact_keep_s + options_.keep_s;
+    if (h.expires_s <= now || h.expires_s > now + options_.contact_keep_s + options_.keep_s) {
+      return true;
+    }
+    if (h.contact) return false;  // the bumper's word outweighs the sonar's silence
+    for (const ClearingBeam& beam : beams_) {
+      const Point2 d = h.world_m - beam.origin;
+      const double along = d.dot(beam.axis);
+      if (along <= 0.0 || along >= beam.free_m) continue;
+      const double lateral = std::abs(beam.axis.x() * d.y() - beam.axis.y() * d.x());
+      if (lateral <= std::max(options_.clear_min_half_width_m, along * tan_half)) return true;
+    }
+    return false;
   });
   const double max_range = std::min(options_.max_range_m, robot.sonar_max_range_m);
-  clear_along_beams(frame, pose, robot);
   for (const SonarReading& r : frame.sonar) {
     if (!r.echo || !std::isfinite(r.range_m)) continue;
     if (r.range_m < robot.sonar_min_range_m || r.range_m > max_range) continue;
@@ -38,10 +52,10 @@ void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
   }
 }
 
-void ObstacleMemory::clear_along_beams(const SensorFrame& frame, const Pose2& pose,
-                                       const RobotGeometry& robot) {
+void ObstacleMemory::collect_clearing_beams(const SensorFrame& frame, const Pose2& pose,
+                                            const RobotGeometry& robot) {
+  beams_.clear();
   if (options_.clear_half_angle_deg <= 0.0) return;
-  const double tan_half = std::tan(options_.clear_half_angle_deg * std::numbers::pi / 180.0);
   for (const SonarReading& r : frame.sonar) {
     if (r.index < 0 || static_cast<std::size_t>(r.index) >= robot.sonars.size()) continue;
     if (!std::isfinite(r.range_m) || r.range_m < robot.sonar_min_range_m) continue;
@@ -51,17 +65,9 @@ void ObstacleMemory::clear_along_beams(const SensorFrame& frame, const Pose2& po
     const double free_m = echo ? r.range_m - options_.clear_margin_m : options_.clear_max_m;
     if (free_m <= 0.0) continue;
     const SonarMount& m = robot.sonars[static_cast<std::size_t>(r.index)];
-    const Point2 origin = pose.transform(Point2(m.x_m, m.y_m));
     const double axis_rad = pose.theta_rad + m.heading_rad;
-    const Point2 axis(std::cos(axis_rad), std::sin(axis_rad));
-    std::erase_if(hits_, [&](const Hit& h) {
-      if (h.contact) return false;  // the bumper's word outweighs the sonar's silence
-      const Point2 d = h.world_m - origin;
-      const double along = d.dot(axis);
-      if (along <= 0.0 || along >= free_m) return false;
-      const double lateral = std::abs(axis.x() * d.y() - axis.y() * d.x());
-      return lateral <= std::max(options_.clear_min_half_width_m, along * tan_half);
-    });
+    beams_.push_back({pose.transform(Point2(m.x_m, m.y_m)),
+                      Point2(std::cos(axis_rad), std::sin(axis_rad)), free_m});
   }
 }
 

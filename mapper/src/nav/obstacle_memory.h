@@ -5,6 +5,7 @@
 /// from steering into the door frame it just passed.
 
 #include <deque>
+#include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
 
@@ -37,11 +38,19 @@ class ObstacleMemory {
 
  private:
   void push(const Point2& world_m, double expires_s, bool contact);
-  /// Removes remembered echoes in the core of this frame's beams, short of their readings.
-  void clear_along_beams(const SensorFrame& frame, const Pose2& pose, const RobotGeometry& robot);
+  /// A beam of this frame: remembered echoes in its core, short of its reading, are gone.
+  struct ClearingBeam {
+    Point2 origin;  ///< the transducer, estimate frame
+    Point2 axis;    ///< unit vector along the beam
+    double free_m;  ///< free up to here along the axis
+  };
+  /// This frame's clearing beams into beams_ (none when clearing is off).
+  void collect_clearing_beams(const SensorFrame& frame, const Pose2& pose,
+                              const RobotGeometry& robot);
 
   MemoryOptions options_;
   std::deque<Hit> hits_;
+  std::vector<ClearingBeam> beams_;  ///< reused from frame to frame
 };
 
 }  // namespace cogmap::mapper::nav

@@ -172,5 +172,27 @@ TEST(ObstacleMemoryClearing, ClearsAlongEachTransducersOwnAxisInTheWorld) {
   EXPECT_TRUE(memory.hits().empty());
 }
 
+// One frame's beams all clear, and the expired hits go in the same pass: the memory keeps the
+// rest in their order. Two mounts as above, the robot at (1, 2) facing north.
+TEST(ObstacleMemoryClearing, OneFrameClearsWithEveryBeamAndForgetsTheExpired) {
+  RobotGeometry robot;
+  robot.sonars = {{0.2, 0.1, 0.0}, {0.0, 0.25, kPi / 2}};
+  const Pose2 pose{1.0, 2.0, kPi / 2};
+  MemoryOptions options;
+  ObstacleMemory memory{options};
+  // An old echo east of the robot, behind both beams, forgotten by the time of the last frame.
+  memory.add_frame(frame(0.0, {echo(1, 1.0)}), {3.0, 2.0, kPi / 2}, robot);  // (1.75, 2)
+  const double later_s = 0.5 * options.keep_s;
+  memory.add_frame(frame(later_s, {echo(0, 1.5), echo(1, 1.5)}), pose, robot);
+  // One more, south-east (transducer 0 from (4, 0) facing south: mount (0.2, 0.1) turned),
+  // off both beams and still fresh at the end.
+  memory.add_frame(frame(later_s, {echo(0, 1.0)}), {4.0, 0.0, -kPi / 2}, robot);
+  ASSERT_EQ(memory.hits().size(), 4u);
+  const ObstacleMemory::Hit last = memory.hits().back();
+  memory.add_frame(frame(options.keep_s + 0.01, {no_echo(0), no_echo(1)}), pose, robot);
+  ASSERT_EQ(memory.hits().size(), 1u);
+  EXPECT_EQ(memory.hits().front().world_m, last.world_m);
+}
+
 }  // namespace
 }  // namespace cogmap::mapper::nav

@@ -36,9 +36,18 @@ int Vfh::wrap(int sector) const {
 }
 
 int Vfh::sector_of(double angle_rad) const {
-  // Shift by half a sector so sector 0 is centred on 0 rad, then fold into [0, 2π).
-  double a = std::fmod(angle_rad + 0.5 * sector_rad_, 2.0 * kPi);
-  if (a < 0.0) a += 2.0 * kPi;
+  // Shift by half a sector so sector 0 is centred on 0 rad, then fold into [0, 2π). The
+  // angles met here lie within (-2π, 4π) (a direction ± an enlargement): fmod returns those
+  // below 2π unchanged and takes 2π off those above, exactly (Sterbenz), so a subtraction
+  // gives the same bits without fmod's cost.
+  const double two_pi = 2.0 * kPi;
+  double a = angle_rad + 0.5 * sector_rad_;
+  if (a >= two_pi && a < 2.0 * two_pi) {
+    a -= two_pi;
+  } else if (!(a > -two_pi && a < two_pi)) {
+    a = std::fmod(a, two_pi);
+  }
+  if (a < 0.0) a += two_pi;
   return wrap(static_cast<int>(std::floor(a / sector_rad_)));
 }
 

@@ -48,6 +48,31 @@ TEST(Vfh, SectorsAreCentredOnMultiplesOfTheSweepIncrement) {
   EXPECT_NEAR(vfh.sector_center_rad(71), -5.0 * kDeg, 1e-12);
 }
 
+// sector_of folds any angle the way std::fmod would: the reference below is the plain
+// definition, checked on both sides of every multiple of 2π from -6π to 8π and between them.
+TEST(Vfh, SectorOfFoldsAnyAngleLikeFmod) {
+  const Vfh vfh{VfhOptions{}};
+  const double two_pi = 2.0 * std::numbers::pi;
+  const double sector = two_pi / vfh.sector_count();
+  const auto reference = [&](double angle_rad) {
+    double a = std::fmod(angle_rad + 0.5 * sector, two_pi);
+    if (a < 0.0) a += two_pi;
+    const int k = static_cast<int>(std::floor(a / sector)) % vfh.sector_count();
+    return k < 0 ? k + vfh.sector_count() : k;
+  };
+  std::vector<double> angles;
+  for (int m = -3; m <= 4; ++m) {
+    const double edge = m * two_pi - 0.5 * sector;  // where the fold happens
+    for (const double a : {edge, m * two_pi, m * two_pi + 1e-9}) {
+      angles.push_back(a);
+      angles.push_back(std::nextafter(a, -1e9));
+      angles.push_back(std::nextafter(a, 1e9));
+    }
+  }
+  for (int i = 0; i <= 20000; ++i) angles.push_back(-3.0 * two_pi + i * (7.0 * two_pi / 20000));
+  for (const double a : angles) EXPECT_EQ(vfh.sector_of(a), reference(a)) << "angle " << a;
+}
+
 TEST(Vfh, CloserObstaclesWeighMore) {
   Vfh vfh{VfhOptions{}};
   EXPECT_GT(vfh.kappa_at(0.5), vfh.kappa_at(2.0));

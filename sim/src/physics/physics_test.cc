@@ -111,5 +111,35 @@ TEST(PhysicsWorld, SkippingFreeStepsChangesNothing) {
   EXPECT_EQ(stepping.skipped_steps(), 0);
 }
 
+// A corridor 1.4 m wide: each wall lies 0.45 m from the body's side as it drives down the middle,
+// within the reach of the old rule (no fixture within 0.95 m of the centre), which never skipped
+// here. Measured clearances let Box2D rest until the body swerves toward a wall, and the poses
+// stay those of stepping always.
+TEST(PhysicsWorld, SkipsStepsBesideWallsItDoesNotTouch) {
+  const WorldSpec w = parse(
+      "name: corridor\nwalls: {thickness_m: 0.12, polylines: [[[-2, 0.76], [30, 0.76]], "
+      "[[-2, -0.76], [30, -0.76]]]}\nstart: {x_m: 0, y_m: 0}\n");
+  PhysicsOptions always;
+  always.skip_free_steps = false;
+  PhysicsWorld skipping(w), stepping(w, always);
+  int contact_steps = 0;
+  const int steps = 4000;
+  for (int i = 0; i < steps; ++i) {
+    // Straight at 0.5 m/s, then a slow weave whose swings end against the walls.
+    const double t = 0.01 * i;
+    const BodyTwist twist{0.5, t < 20.0 ? 0.0 : 1.2 * std::sin(0.8 * (t - 20.0))};
+    const mapper::Pose2& a = skipping.step(twist, 0.01);
+    const mapper::Pose2& b = stepping.step(twist, 0.01);
+    ASSERT_EQ(a.x_m, b.x_m) << "step " << i;
+    ASSERT_EQ(a.y_m, b.y_m) << "step " << i;
+    ASSERT_EQ(a.theta_rad, b.theta_rad) << "step " << i;
+    ASSERT_EQ(skipping.in_contact(), stepping.in_contact()) << "step " << i;
+    if (stepping.in_contact()) ++contact_steps;
+  }
+  EXPECT_GT(contact_steps, 50);  // the weave really reached the walls
+  // The straight 20 s are skipped whole but for the first step, which measures the clearance.
+  EXPECT_GE(skipping.skipped_steps(), 1999);
+}
+
 }  // namespace
 }  // namespace cogmap::sim

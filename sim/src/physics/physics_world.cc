@@ -1,8 +1,11 @@
 #include "cogmap/sim/physics_world.h"
 
+#include <box2d/b2_distance.h>
 #include <box2d/box2d.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "cogmap/sim/world_geometry.h"
 #include "world/polygon_ops.h"
@@ -42,16 +45,16 @@ bool box2d_accepts(const std::vector<b2Vec2>& pts) {
   return std::abs(0.5f * twice_area) > 100.0f * b2_epsilon;
 }
 
-// How far beyond the body's half diagonal Box2D's box of it can reach: its fattening
-// (b2_aabbExtension, 0.1 m), the displacement it predicts (b2_aabbMultiplier x a step's travel,
-// ~4 cm) and the staleness of the box between reinsertions (up to another fattening), rounded
-// up. The test SkippingFreeStepsChangesNothing still passes with 0 and fails at -0.2.
-constexpr double kFatMarginM = 0.3;
-// A clear query looks this much further, and holds until the body has moved this far.
-constexpr double kClearZoneSlackM = 0.25;
-// After a query that found a fixture, Box2D steps without asking again until the body has
-// moved this far.
-constexpr double kRequeryAfterM = 0.1;
+// A skipped step leaves every shape at least this far apart (m): Box2D calls two shapes touching
+// once their rounded outlines meet (distance 0), so the margin only has to cover float rounding;
+// 3 cm is plenty. The test SkippingFreeStepsChangesNothing still passes at 0 and fails at -2 cm.
+constexpr double kSkipMarginM = 0.03;
+// The clearance query looks this far beyond the body's half diagonal: farther fixtures bound the
+// clearance without a distance computation. 1 m holds a corridor's walls for ~2 s of driving.
+constexpr double kQueryReachM = 1.0;
+// Near a wall (no skip) the clearance is measured again only after the body moved this far (m):
+// Box2D steps meanwhile, which is always right.
+constexpr double kRemeasureAfterM = 0.05;
 
 int add_convex(b2Body* body, const mapper::Polyline& outline) {
   if (std::abs(geom::signed_area(outline)) < kMinFixtureAreaM2) return 0;
@@ -108,43 +111,74 @@ PhysicsWorld::PhysicsWorld(const WorldSpec& world, const PhysicsOptions& options
 
 PhysicsWorld::~PhysicsWorld() = default;
 
-bool PhysicsWorld::clear_of_obstacles() {
-  // Box2D keeps a contact for every pair of fixtures whose fattened boxes overlap. With none
-  // (an empty contact list) and no other fixture's fattened box within reach of the body, a step
-  // can neither create a contact nor touch anything. The reach covers the body in any heading
-  // (half its diagonal) and the margin Box2D fattens the body's box by (kFatMarginM).
-  if (body_->GetContactList() != nullptr) return false;
-  const mapper::Point2 here = pose_.translation();
-  // A query that found the zone clear holds until the body has left it; one that found a fixture
-  // is not repeated until the body has moved on a little (Box2D steps meanwhile, which is always
-  // right): a query costs about a Box2D step where walls are near.
-  if (clear_at_ && (here - *clear_at_).norm() < kClearZoneSlackM) return true;
-  if (blocked_at_ && (here - *blocked_at_).norm() < kRequeryAfterM) return false;
-  clear_at_.reset();
-  blocked_at_.reset();
-  struct AnyOther final : b2QueryCallback {
+double PhysicsWorld::clearance_m() const {
+  // Fixtures whose (fattened) box overlaps a box of half side reach about the body: every other
+  // shape lies outside that box, so at least reach - half diagonal from the body in any heading.
+  const double half_diagonal_m = 0.5 * std::hypot(options_.body_length_m, options_.body_width_m);
+  const double reach_m = half_diagonal_m + kQueryReachM;
+  struct Nearby final : b2QueryCallback {
     const b2Body* self;
-    bool found = false;
-    explicit AnyOther(const b2Body* body) : self(body) {}
+    std::vector<b2Fixture*> fixtures;
+    explicit Nearby(const b2Body* body) : self(body) {}
     bool ReportFixture(b2Fixture* fixture) override {
-      if (fixture->GetBody() == self) return true;  // keep looking
-      found = true;
-      return false;
+      if (fixture->GetBody() != self) fixtures.push_back(fixture);
+      return true;
     }
   } query(body_);
-  const double half_diagonal_m = 0.5 * std::hypot(options_.body_length_m, options_.body_width_m);
-  const auto reach = static_cast<float>(half_diagonal_m + kFatMarginM + kClearZoneSlackM);
-  const b2Vec2 c = to_b2(here);
+  const b2Vec2 c = body_->GetPosition();
+  const auto r = static_cast<float>(reach_m);
   b2AABB box;
-  box.lowerBound = c - b2Vec2(reach, reach);
-  box.upperBound = c + b2Vec2(reach, reach);
+  box.lowerBound = c - b2Vec2(r, r);
+  box.upperBound = c + b2Vec2(r, r);
   world_->QueryAABB(&query, box);
-  if (query.found) {
-    blocked_at_ = here;
-    return false;
+  // (Less the body's own rounding, which lies outside its box.)
+  double clearance = kQueryReachM - b2_polygonRadius;
+  const b2Fixture* own = body_->GetFixtureList();
+  for (const b2Fixture* fixture : query.fixtures) {
+    for (int32 child = 0; child < fixture->GetShape()->GetChildCount(); ++child) {
+      b2DistanceInput in;
+      in.proxyA.Set(own->GetShape(), 0);
+      in.proxyB.Set(fixture->GetShape(), child);
+      in.transformA = body_->GetTransform();
+      in.transformB = fixture->GetBody()->GetTransform();
+      in.useRadii = true;  // the rounded outlines Box2D's contacts test
+      b2SimplexCache cache;
+      cache.count = 0;
+      b2DistanceOutput out;
+      b2Distance(&out, &cache, &in);
+      clearance = std::min(clearance, static_cast<double>(out.distance));
+    }
   }
-  clear_at_ = here;
-  return true;
+  return clearance;
+}
+
+bool PhysicsWorld::clear_of_obstacles(double step_reach_m) {
+  // A touching contact needs Box2D's solver. Otherwise a step whose body stays farther than
+  // kSkipMarginM from every other shape can neither touch anything nor create a contact that
+  // touches, so the body moves freely and its pose is the free arc: the step is skipped. Box2D
+  // catches up on the contacts' bookkeeping (new pairs, pairs that parted) at its next step,
+  // always before any shape can touch.
+  for (b2ContactEdge* edge = body_->GetContactList(); edge != nullptr; edge = edge->next) {
+    if (edge->contact->IsTouching()) return false;
+  }
+  // How far any point of the body has moved since the clearance was measured: the clearance
+  // now is at least the measured one less this, and at most the measured one plus this.
+  const double half_diagonal_m = 0.5 * std::hypot(options_.body_length_m, options_.body_width_m);
+  const auto travelled_m = [&]() {
+    return (pose_.translation() - measured_at_.translation()).norm() +
+           half_diagonal_m *
+               std::abs(mapper::wrap_angle_rad(pose_.theta_rad - measured_at_.theta_rad));
+  };
+  if (clearance_known_) {
+    const double travelled = travelled_m();
+    if (clearance_m_ - travelled - step_reach_m > kSkipMarginM) return true;
+    // Too near to skip: measuring again only pays once the body has moved on a little.
+    if (travelled < kRemeasureAfterM) return false;
+  }
+  measured_at_ = pose_;
+  clearance_m_ = clearance_m();
+  clearance_known_ = true;
+  return clearance_m_ - step_reach_m > kSkipMarginM;
 }
 
 const mapper::Pose2& PhysicsWorld::step(const BodyTwist& twist, double dt_s) {
@@ -158,7 +192,9 @@ const mapper::Pose2& PhysicsWorld::step(const BodyTwist& twist, double dt_s) {
   body_->SetLinearVelocity({static_cast<float>(twist.v_mps * std::cos(chord_heading)),
                             static_cast<float>(twist.v_mps * std::sin(chord_heading))});
   body_->SetAngularVelocity(static_cast<float>(twist.w_radps));
-  if (options_.skip_free_steps && clear_of_obstacles()) {
+  const double half_diagonal_m = 0.5 * std::hypot(options_.body_length_m, options_.body_width_m);
+  const double step_reach_m = std::abs(ds_m) + half_diagonal_m * std::abs(dtheta_rad);
+  if (options_.skip_free_steps && clear_of_obstacles(step_reach_m)) {
     // Nothing within reach: the step would move the body freely, and its pose is the free one
     // anyway (and the next step sets the body there). Skipping Box2D here saves its broad
     // phase, solver and per-step timers for most of a run.

@@ -98,6 +98,11 @@ MapAccuracy evaluate_map(std::span<const mapper::Segment> map,
                          std::span<const mapper::Segment> truth,
                          std::span<const mapper::Point2> visible, const MapMetricsOptions& options);
 
+/// The same with an index already built over the true surfaces (any cell size: the distances
+/// it answers are exact), so a run scoring several maps builds it once.
+MapAccuracy evaluate_map(std::span<const mapper::Segment> map, const SegmentIndex& truth_index,
+                         std::span<const mapper::Point2> visible, const MapMetricsOptions& options);
+
 /// The q-quantile (0..1) with linear interpolation between order statistics (index q·(n−1),
 /// the numpy default); the median of an even count is the mean of the middle two.
 /// `values` is reordered. Requires a non-empty input.

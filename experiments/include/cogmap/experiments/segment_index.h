@@ -39,7 +39,8 @@ class SegmentIndex {
     int y = 0;
   };
   Cell cell_of(const mapper::Point2& p) const;
-  const std::vector<std::uint32_t>* bucket(int x, int y) const;
+  /// The segments listed in cell (x, y); none outside the grid.
+  std::span<const std::uint32_t> bucket(int x, int y) const;
 
   std::vector<mapper::Segment> segments_;
   double cell_m_ = 0.5;
@@ -47,7 +48,9 @@ class SegmentIndex {
   double origin_y_m_ = 0.0;
   int width_ = 0;
   int height_ = 0;
-  std::vector<std::vector<std::uint32_t>> buckets_;  ///< row-major, segment indices per cell
+  /// Cell c (row-major) lists bucket_items_[bucket_start_[c] .. bucket_start_[c + 1]).
+  std::vector<std::uint32_t> bucket_start_;
+  std::vector<std::uint32_t> bucket_items_;  ///< segment indices, cell by cell
 };
 
 /// True when the closed segments p1-p2 and q1-q2 share a point (touching counts).

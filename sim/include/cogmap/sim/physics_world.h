@@ -24,9 +24,9 @@ struct PhysicsOptions {
   double friction = 0.4;         ///< body against walls; rubber tyres and bumpers on plaster
   int velocity_iterations = 8;   ///< Box2D solver iterations per step
   int position_iterations = 3;   ///< Box2D position correction iterations per step
-  /// Skip Box2D's step while no fixture is within reach of the body (the pose is then the free
-  /// arc either way; docs/performance.md "Physics: free steps"). false steps Box2D always
-  /// (the test compares the two).
+  /// Skip Box2D's step while the body touches nothing and stays clear of every other shape over
+  /// the step (the pose is then the free arc either way; docs/performance.md, "Lazy bounces and
+  /// other per-frame savings"). false steps Box2D always (the test compares the two).
   bool skip_free_steps = true;
 };
 
@@ -57,19 +57,23 @@ class PhysicsWorld {
   int static_fixture_count() const { return static_fixtures_; }
 
  private:
-  /// True when no fixture but the body's own lies within reach of it and it has no contact, so a
-  /// Box2D step would move it freely.
-  bool clear_of_obstacles();
+  /// True when the body touches nothing and stays farther than a margin from every other shape
+  /// over a step that moves its points by at most step_reach_m, so a Box2D step would move it
+  /// freely.
+  bool clear_of_obstacles(double step_reach_m);
+  /// Least distance from the body's outline to any other shape (rounded outlines, as Box2D's
+  /// contacts see them), capped at kQueryReachM.
+  double clearance_m() const;
 
   PhysicsOptions options_;
   std::unique_ptr<b2World> world_;
   b2Body* body_ = nullptr;  ///< owned by world_
   mapper::Pose2 pose_;
   long skipped_steps_ = 0;
-  /// Where the last query found no fixture within reach plus slack (clear_of_obstacles).
-  std::optional<mapper::Point2> clear_at_;
-  /// Where the last query found a fixture within reach.
-  std::optional<mapper::Point2> blocked_at_;
+  /// The body's pose when clearance_m_ was measured (clear_of_obstacles).
+  mapper::Pose2 measured_at_;
+  double clearance_m_ = 0.0;
+  bool clearance_known_ = false;
   bool in_contact_ = false;
   int static_fixtures_ = 0;
 };
