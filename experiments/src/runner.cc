@@ -200,15 +200,17 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   mapper::Mapper mapper(experiment.mapper, geometry, store, start);
   const double occupied_threshold = experiment.mapper.builder.occupied_threshold;
   Clock::duration figure_time{0};  // figures: not the frame loop's time
-  // The per-stage error needs the room's grids, which live only for the listener call: a copy
-  // of them goes to a second thread (~1 ms of nearest-wall queries a room, done while the robot
-  // drives on), one room at a time and in order, so the sums are the same.
+  // The room's grid file (grid_NNN.pgm/.yaml) and the per-stage error need the room's grids,
+  // which live only for the listener call: a copy of them goes to a second thread (~1 ms of
+  // nearest-wall queries and the two files a room, done while the robot drives on), one room at
+  // a time and in order, so the sums are the same. The room itself (asrs/) is saved by the
+  // mapper before the listener is called, durable as it finishes whatever happens here.
   std::optional<ErrorBreakdownBuilder> breakdown;
   if (truth) breakdown.emplace(truth->surfaces, occupied_threshold);
-  std::future<void> breakdown_room;  // after `breakdown`: destroyed (so joined) before it
-  bool closing_run = false;          // mapper.finish() closes the last room after the last row
-  std::vector<double> room_cpu_s;    // per finished room: its pipeline and EM time
-  double mapping_cpu_s = 0.0;        // the two, summed over the rooms before
+  std::future<void> room_task;     // after `breakdown`: destroyed (so joined) before it
+  bool closing_run = false;        // mapper.finish() closes the last room after the last row
+  std::vector<double> room_cpu_s;  // per finished room: its pipeline and EM time
+  double mapping_cpu_s = 0.0;      // the two, summed over the rooms before
   // The master maps (Fig. 4.4), corrected and odometry only, and the room reports, gathered as
   // each room is stored (the listener gets the very room the store just saved; reading them all
   // back at the end cost 0.65 M instructions a room): the walls stay, the grids go.
@@ -237,21 +239,23 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     room_cpu_s.push_back(mapping_now_s - mapping_cpu_s);
     mapping_cpu_s = mapping_now_s;
     const std::string stem = room_stem(asr.id);
-    write_ros_map(trace.raw, occupied_threshold, out, "grid_" + stem, durability);
+    mapper::AsrTrace stages;  // what the grid file and add_room read
+    stages.raw = trace.raw;
     if (breakdown) {
-      mapper::AsrTrace stages;  // what add_room reads
-      stages.raw = trace.raw;
       stages.cleaned = trace.cleaned;
       stages.extracted = trace.extracted;
       stages.fitted = trace.fitted;
-      const RoomSpan span{asr.start_time_s, asr.end_time_s, asr.pose.theta_rad, !closing_run};
-      if (breakdown_room.valid()) breakdown_room.get();
-      breakdown_room = std::async(std::launch::async, [&builder = *breakdown, pose = asr.pose,
-                                                       stages = std::move(stages), span] {
-        builder.add_room(pose, stages);
-        builder.add_room_span(span);
-      });
     }
+    const RoomSpan span{asr.start_time_s, asr.end_time_s, asr.pose.theta_rad, !closing_run};
+    if (room_task.valid()) room_task.get();  // the previous room's (rethrows its failure)
+    room_task = std::async(
+        std::launch::async, [&, pose = asr.pose, stages = std::move(stages), span, stem] {
+          write_ros_map(stages.raw, occupied_threshold, out, "grid_" + stem, durability);
+          if (breakdown) {
+            breakdown->add_room(pose, stages);
+            breakdown->add_room_span(span);
+          }
+        });
     if (figures) {
       const auto t0 = Clock::now();
       render::write_room_stages_figure(trace, experiment.name + ": room " + std::to_string(asr.id),
@@ -370,6 +374,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     m.asr_count = m.rooms.size();
     m.memory = memory_metrics(sizes);
 
+    if (room_task.valid()) room_task.get();  // the last room's grid file and breakdown
     const TrajectoryView rows = session.rows.view();
     // trajectory.csv (and the nav trace) only read the rows: written on a second thread while
     // this one works out the truth metrics and the maps (it formats ~10 numbers a frame).
@@ -400,7 +405,6 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     }
     if (truth) {
       m.localization = evaluate_trajectory(rows);
-      if (breakdown_room.valid()) breakdown_room.get();
       m.error_breakdown = breakdown->finish(rows);
       add_contacts(m.nav, rows, truth->surfaces, geometry, &breakdown->truth_index());
       if (experiment.controller.type == ControllerKind::kExplore) {
