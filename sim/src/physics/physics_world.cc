@@ -86,7 +86,9 @@ int add_piece(b2Body* body, const SolidPiece& piece) {
 }  // namespace
 
 PhysicsWorld::PhysicsWorld(const WorldSpec& world, const PhysicsOptions& options)
-    : options_(options), world_(std::make_unique<b2World>(b2Vec2(0.0f, 0.0f))) {
+    : options_(options),
+      world_(std::make_unique<b2World>(b2Vec2(0.0f, 0.0f))),
+      half_diagonal_m_(0.5 * std::hypot(options.body_length_m, options.body_width_m)) {
   b2BodyDef ground_def;  // static by default
   b2Body* ground = world_->CreateBody(&ground_def);
   for (const SolidPiece& piece : solid_pieces(world)) static_fixtures_ += add_piece(ground, piece);
@@ -114,8 +116,7 @@ PhysicsWorld::~PhysicsWorld() = default;
 double PhysicsWorld::clearance_m() const {
   // Fixtures whose (fattened) box overlaps a box of half side reach about the body: every other
   // shape lies outside that box, so at least reach - half diagonal from the body in any heading.
-  const double half_diagonal_m = 0.5 * std::hypot(options_.body_length_m, options_.body_width_m);
-  const double reach_m = half_diagonal_m + kQueryReachM;
+  const double reach_m = half_diagonal_m_ + kQueryReachM;
   struct Nearby final : b2QueryCallback {
     const b2Body* self;
     std::vector<b2Fixture*> fixtures;
@@ -163,10 +164,9 @@ bool PhysicsWorld::clear_of_obstacles(double step_reach_m) {
   }
   // How far any point of the body has moved since the clearance was measured: the clearance
   // now is at least the measured one less this, and at most the measured one plus this.
-  const double half_diagonal_m = 0.5 * std::hypot(options_.body_length_m, options_.body_width_m);
   const auto travelled_m = [&]() {
     return (pose_.translation() - measured_at_.translation()).norm() +
-           half_diagonal_m *
+           half_diagonal_m_ *
                std::abs(mapper::wrap_angle_rad(pose_.theta_rad - measured_at_.theta_rad));
   };
   if (clearance_known_) {
@@ -192,8 +192,7 @@ const mapper::Pose2& PhysicsWorld::step(const BodyTwist& twist, double dt_s) {
   body_->SetLinearVelocity({static_cast<float>(twist.v_mps * std::cos(chord_heading)),
                             static_cast<float>(twist.v_mps * std::sin(chord_heading))});
   body_->SetAngularVelocity(static_cast<float>(twist.w_radps));
-  const double half_diagonal_m = 0.5 * std::hypot(options_.body_length_m, options_.body_width_m);
-  const double step_reach_m = std::abs(ds_m) + half_diagonal_m * std::abs(dtheta_rad);
+  const double step_reach_m = std::abs(ds_m) + half_diagonal_m_ * std::abs(dtheta_rad);
   if (options_.skip_free_steps && clear_of_obstacles(step_reach_m)) {
     // Nothing within reach: the step would move the body freely, and its pose is the free one
     // anyway (and the next step sets the body there). Skipping Box2D here saves its broad

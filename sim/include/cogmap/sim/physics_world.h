@@ -68,6 +68,7 @@ class PhysicsWorld {
   PhysicsOptions options_;
   std::unique_ptr<b2World> world_;
   b2Body* body_ = nullptr;  ///< owned by world_
+  double half_diagonal_m_;  ///< how far a body point can lie from its centre
   mapper::Pose2 pose_;
   long skipped_steps_ = 0;
   /// The body's pose when clearance_m_ was measured (clear_of_obstacles).
