@@ -74,14 +74,16 @@ TEST_P(MapFidelity, EverySeedWithinWhatWasMeasured) {
 INSTANTIATE_TEST_SUITE_P(
     ShippedRoutes, MapFidelity,
     ::testing::Values(
-        // Worst seeds (2026-12-02: the door search, EM's posterior against the last 32 rooms):
-        // median 0.257 m, p90 0.667 m, coverage 0.291, spurious 0.402, 8.53°; mean heading
-        // error 7.69° (odometry) -> 5.21° (corrected).
+        // Worst seeds (2026-12-03: the door search, EM's posterior against the last 32 rooms,
+        // "Looking past a close waypoint"): median 0.257 m, p90 0.667 m, coverage 0.291,
+        // spurious 0.402, 8.53°; mean heading error 7.36° (odometry) -> 3.99° (corrected).
         FidelityCase{"nine_rooms", "nine_rooms", {}, 0.32, 0.83, 0.23, 0.50, 10.7},
         // 0.079 m, 0.336 m, 0.397, 0.134, 6.94°; mean 3.57° -> 3.47°.
         FidelityCase{"three_room_slam", "three_room_slam", {}, 0.099, 0.42, 0.32, 0.168, 8.7},
-        // ε = 5 (the shipped value): 0.377 m, 0.909 m, 0.194, 0.596, 2.46°; mean 9.32° -> 1.82°.
-        FidelityCase{"hallway_loop", "hallway_loop", {}, 0.47, 1.14, 0.155, 0.75, 3.1},
+        // ε = 5 (the shipped value): 0.396 m, 0.886 m, 0.106, 0.764, 2.46°; mean 7.90° -> 1.64°.
+        // Seed 3 gives the north-east corner up (docs/results.md): coverage 0.106 and spurious
+        // 0.764 are that seed's (the others: 0.194 and 0.596 at worst).
+        FidelityCase{"hallway_loop", "hallway_loop", {}, 0.50, 1.11, 0.085, 0.96, 3.1},
         // ℘ = 55 mm, one room (no EM correction): 0.064 m, 0.214 m, 0.153, 0.067.
         FidelityCase{"small_clutter_55",
                      "small_clutter",
@@ -93,23 +95,24 @@ INSTANTIATE_TEST_SUITE_P(
                      std::nullopt}),
     [](const auto& info) { return info.param.name; });
 
-// The shipped explore experiments (release build, 2026-12-02, with the explorer's doorway
-// looks and its last-resort doorway goals, and the spin guard's escape clearance, seeds 1-5; worst
+// The shipped explore experiments (release build, 2026-12-03, with the explorer's doorway
+// looks and its last-resort doorway goals, the spin guard's escape clearance and "Looking past a
+// close waypoint", seeds 1-5; worst
 // seeds in the comments; same rules: 1.25x the worst, coverage 0.8x). The tours are chaotic (a
 // changed look reshuffles every later turn and with it the skid-steer drift), so the bounds move
 // with any change of the explorer; docs/results.md has the 5-seed tables.
 INSTANTIATE_TEST_SUITE_P(
     ShippedExplore, MapFidelity,
     ::testing::Values(
-        // 0.432 m, 1.138 m, 0.369, 0.626, 9.70°; mean 19.03° -> 5.10°.
-        FidelityCase{"explore_nine_rooms", "explore_nine_rooms", {}, 0.54, 1.43, 0.29, 0.79, 12.1},
-        // 0.333 m, 1.149 m, 0.489, 0.530, 22.01°; mean 8.37° -> 7.42°.
+        // 0.426 m, 1.100 m, 0.378, 0.609, 9.70°; mean 14.12° -> 5.56°.
+        FidelityCase{"explore_nine_rooms", "explore_nine_rooms", {}, 0.53, 1.38, 0.30, 0.76, 12.1},
+        // 0.333 m, 1.149 m, 0.489, 0.530, 22.01°; mean 11.25° -> 9.10°.
         FidelityCase{
             "explore_three_room_slam", "explore_three_room_slam", {}, 0.42, 1.44, 0.39, 0.66, 27.5},
-        // 0.272 m, 1.020 m, 0.552, 0.472, 8.44°; mean 10.34° -> 5.32°. One room, which the
+        // 0.345 m, 0.894 m, 0.520, 0.536, 8.28°; mean 7.99° -> 3.15°. One room, which the
         // doorway rule cuts into several ASRs among the desks.
         FidelityCase{
-            "explore_small_clutter", "explore_small_clutter", {}, 0.34, 1.28, 0.44, 0.59, 10.5},
+            "explore_small_clutter", "explore_small_clutter", {}, 0.43, 1.12, 0.42, 0.67, 10.4},
         // 0.192 m, 0.845 m, 0.572, 0.355, 14.03°; mean 7.51° -> 6.41°. Seed 1: at 218 s, going
         // back into the first room, EM turned the estimate by -12.6° while odometry was 1.7° off
         // (14.0° against 1.4° at the end); with the doorway looks alone (no last resort) that

@@ -159,8 +159,15 @@ class RouteFollower final : public ReroutableFollower {
       // openings the line already threads are VFH's.
       const bool blocked = line_blocked(points, here, goal, options_.vfh.safety_radius_m, 0.1,
                                         options_.door.search_range_m);
-      const std::optional<Opening> found =
-          blocked ? door_.find(points, here, goal, now) : std::nullopt;
+      std::optional<Opening> found = blocked ? door_.find(points, here, goal, now) : std::nullopt;
+      // Looking past a close waypoint (door_goal) is for a door-centre waypoint the estimate
+      // puts in a jamb: the opening must be that waypoint's door, not the way back out of a
+      // room whose centre clutter hides (which then leads back in, and out, until the
+      // waypoint is given up).
+      if (found && goal != waypoints_[index_] &&
+          (found->center_m - waypoints_[index_]).norm() > options_.door.goal_in_door_m) {
+        found.reset();
+      }
       goal_in_pocket_ = blocked && door_.goal_in_pocket() && options_.door.give_up_goal_in_pocket;
       if (!door_.offer(found, now)) {
         return std::nullopt;

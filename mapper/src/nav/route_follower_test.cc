@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
@@ -162,6 +163,44 @@ TEST(RouteFollower, GoesAroundAnObstacle) {
   }
   EXPECT_TRUE(c->done());
   EXPECT_GT(nearest_m, 0.3);
+}
+
+// A room-centre waypoint 0.7 m ahead with clutter beside the line to it (within VFH's safety
+// radius, outside half of it: not "reached behind an obstacle"), and the next waypoint beyond
+// the room's door. Looking past the close waypoint is for a door-centre waypoint the estimate
+// puts in a jamb: the door 2.9 m from this one must not lead the robot back out of the room.
+// A door-centre waypoint off the same door's centre still hands the door over.
+struct ClutteredRoomCentre {
+  Fixture fx;
+  ClutteredRoomCentre() {
+    fx.grid.fill_box(-3.0, -0.05, -0.55, 0.05, 15.0f);  // wall y = 0, door x in [-0.5, 0.5]
+    fx.grid.fill_box(0.55, -0.05, 3.0, 0.05, 15.0f);
+    fx.grid.fill_box(0.22, -2.78, 0.38, -2.52, 15.0f);  // clutter, 0.25-0.35 m off the line
+  }
+  /// Whether the door behaviour holds an opening within `cycles` at the fixed pose, and where.
+  std::optional<Point2> door_held(const Point2& waypoint, const Pose2& pose, int cycles) {
+    auto c = make_route_follower(RouteOptions{}, {waypoint, Point2(1.5, 1.5)});
+    for (int i = 0; i < cycles; ++i) {
+      fx.step(*c, i, pose);
+      if (c->trace().door_active) return Point2(c->trace().door_center_m);
+    }
+    return std::nullopt;
+  }
+};
+
+TEST(RouteFollower, DoesNotLeaveThroughTheDoorForTheWaypointAfterARoomCentre) {
+  ClutteredRoomCentre room;
+  EXPECT_FALSE(room.door_held(Point2(0.0, -2.9), {0.0, -2.2, -kPi / 2}, 20).has_value());
+}
+
+TEST(RouteFollower, StillLooksPastADoorCentreWaypointTheEstimatePutsInAJamb) {
+  ClutteredRoomCentre room;
+  // The door's waypoint 0.25 m off the opening's centre, 0.74 m from the robot: the line to
+  // the waypoint after it meets the wall beside the door.
+  const auto door = room.door_held(Point2(0.25, 0.0), {0.0, -0.7, kPi / 2}, 20);
+  ASSERT_TRUE(door.has_value());
+  EXPECT_NEAR(door->x(), 0.0, 0.15);
+  EXPECT_NEAR(door->y(), 0.0, 0.15);
 }
 
 TEST(IdleController, AlwaysCommandsZero) {
