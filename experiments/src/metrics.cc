@@ -181,7 +181,8 @@ MapAccuracy evaluate_map(std::span<const Segment> map, const SegmentIndex& truth
   return out;
 }
 
-std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows) {
+std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows,
+                                                        std::optional<double> closed_heading_rad) {
   LocalizationAccuracy out;
   double sum_odom = 0.0, sum_est = 0.0;
   std::optional<TrajectoryRow> last;  // a copy: a row is valid only until the next one is read
@@ -201,6 +202,10 @@ std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows) {
       std::abs(mapper::wrap_angle_rad(last->odometry.theta_rad - last->truth->theta_rad)) * kDeg;
   out.heading_error_final_corrected_deg =
       std::abs(mapper::wrap_angle_rad(last->estimate.theta_rad - last->truth->theta_rad)) * kDeg;
+  if (closed_heading_rad) {
+    out.heading_error_final_closed_deg =
+        std::abs(mapper::wrap_angle_rad(*closed_heading_rad - last->truth->theta_rad)) * kDeg;
+  }
   return out;
 }
 

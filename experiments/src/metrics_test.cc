@@ -239,6 +239,14 @@ TEST(TrajectoryMetrics, AteAndFinalHeading) {
   EXPECT_NEAR(m->heading_error_final_corrected_deg,
               180.0 - (0.05 - 0.02) * 180.0 / std::numbers::pi, 1e-9);
   EXPECT_EQ(m->frames, 4u);
+  EXPECT_FALSE(m->heading_error_final_closed_deg.has_value());
+  // Once the last room is closed its correction turns the estimate; a heading given in any
+  // number of turns (−3π + 0.02 ≡ π + 0.02) is 0.07 rad from the truth's π − 0.05.
+  const auto closed = evaluate_trajectory(rows, -std::numbers::pi + 0.02 - 2.0 * std::numbers::pi);
+  ASSERT_TRUE(closed.has_value());
+  ASSERT_TRUE(closed->heading_error_final_closed_deg.has_value());
+  EXPECT_NEAR(*closed->heading_error_final_closed_deg, 0.07 * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_DOUBLE_EQ(closed->heading_error_final_corrected_deg, m->heading_error_final_corrected_deg);
 }
 
 TEST(TrajectoryMetrics, NoTruthNoMetrics) {

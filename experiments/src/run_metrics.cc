@@ -126,7 +126,9 @@ std::string metrics_json_text(const RunMetrics& m) {
     j["localization"] = {
         {"heading_error_final_deg",
          {{"odometry", l.heading_error_final_odometry_deg},
-          {"corrected", l.heading_error_final_corrected_deg}}},
+          {"corrected", l.heading_error_final_corrected_deg},
+          {"closed", l.heading_error_final_closed_deg ? Json(*l.heading_error_final_closed_deg)
+                                                      : Json(nullptr)}}},
         {"ate_rmse_m",
          {{"odometry", l.ate_rmse_odometry_m}, {"corrected", l.ate_rmse_corrected_m}}},
         {"frames", l.frames}};

@@ -91,14 +91,17 @@ TEST(RunMetrics, JsonHasTheRequiredKeysAndOmitsTruthMetricsWithoutTruth) {
   EXPECT_NE(without.find("\"real_time_factor\": 20.0"), std::string::npos) << without;
   m.map = MapAccuracy{};
   m.map->wall_error_median_m = 0.04;
-  m.localization = LocalizationAccuracy{6.1, 0.7, 1.9, 0.21, 10};
+  m.localization = LocalizationAccuracy{6.1, 0.7, 1.9, 0.21, 10, std::nullopt};
   const std::string with = metrics_json_text(m);
   EXPECT_NE(with.find("\"wall_error_median_m\": 0.04"), std::string::npos);
   EXPECT_NE(with.find("\"wall_coverage\": null"), std::string::npos);
   EXPECT_NE(with.find("\"heading_error_final_deg\": {\n      \"odometry\": 6.1,\n      "
-                      "\"corrected\": 0.7\n    }"),
+                      "\"corrected\": 0.7,\n      \"closed\": null\n    }"),
             std::string::npos)
       << with;
+  m.localization->heading_error_final_closed_deg = 0.5;
+  EXPECT_NE(metrics_json_text(m).find("\"corrected\": 0.7,\n      \"closed\": 0.5\n    }"),
+            std::string::npos);
 }
 
 TEST(RunMetrics, PerRoomMappingTimeIsInMillisecondsUnderTiming) {

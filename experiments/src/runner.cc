@@ -102,6 +102,7 @@ struct SessionResult {
   TrajectoryLog rows;                 // full chunks on disk: memory does not grow with the run
   std::vector<NavTraceRow> nav_rows;  // output.nav_trace only
   std::optional<bool> route_completed;
+  std::optional<double> closed_heading_rad;  // the estimate once the last room is closed
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
 };
@@ -321,6 +322,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     robot.stop();
     closing_run = true;
     mapper.finish();
+    if (!session.rows.empty()) session.closed_heading_rad = mapper.pose_estimate().theta_rad;
   } catch (const std::exception& e) {
     try {
       robot.stop();
@@ -404,7 +406,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       odom_path.add(r.odometry.translation());
     }
     if (truth) {
-      m.localization = evaluate_trajectory(rows);
+      m.localization = evaluate_trajectory(rows, session.closed_heading_rad);
       m.error_breakdown = breakdown->finish(rows);
       add_contacts(m.nav, rows, truth->surfaces, geometry, &breakdown->truth_index());
       if (experiment.controller.type == ControllerKind::kExplore) {

@@ -315,7 +315,11 @@ std::optional<int> Mapper::finish() {
   Impl& m = *impl_;
   if (!m.started) return std::nullopt;
   m.started = false;
-  return m.finish_room(m.last_time_s, std::nullopt);
+  const std::optional<int> id = m.finish_room(m.last_time_s, std::nullopt);
+  // The last room's correction turns the robot's estimate too, as every room's does when the
+  // robot leaves it: pose_estimate() is the end of the run as the whole map sees it.
+  if (m.previous_odometry) m.last_estimate = m.estimate(*m.previous_odometry);
+  return id;
 }
 
 Pose2 Mapper::odometry_pose() const {

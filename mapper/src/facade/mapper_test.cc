@@ -170,6 +170,30 @@ TEST(Mapper, DistanceBoundariesSplitACorridorAndEmUndoesHeadingDrift) {
   EXPECT_LT(median_wall_error(map_em, walls), median_wall_error(map_odometry, walls));
 }
 
+TEST(Mapper, FinishTurnsTheEstimateByTheLastRoomsCorrection) {
+  const RobotGeometry robot = p2at_geometry();
+  const std::vector<Segment> walls{{{-1.0, -1.2}, {25.0, -1.2}}, {{-1.0, 1.2}, {25.0, 1.2}}};
+  const double drift = 1.0 * std::numbers::pi / 180.0;  // 1° per metre, as above
+  const auto frames = drive({{0.0, 0.0}, {22.0, 0.0}}, walls, robot, drift);
+  MapperOptions options;
+  options.boundary = BoundaryKind::kDistance;
+  options.distance.asr_distance_m = 4.0;
+  options.localization = LocalizationKind::kEm;
+  options.localizer.odometry_prior = false;
+  MemoryAsrStore store;
+  Mapper mapper(options, robot, store, Pose2{});
+  for (const SensorFrame& f : frames) mapper.process(f);
+  const Pose2 before = mapper.pose_estimate();
+  const std::optional<int> last = mapper.finish();
+  ASSERT_TRUE(last.has_value());
+  const double correction_rad = store.load(*last).heading_correction_rad;
+  // The last 2 m drifted 2° that no boundary has corrected yet; closing the room corrects them.
+  EXPECT_GT(std::abs(correction_rad), 0.5 * std::numbers::pi / 180.0);
+  const Pose2 after = mapper.pose_estimate();
+  EXPECT_NEAR(wrap_angle_rad(after.theta_rad - before.theta_rad), correction_rad, 1e-12);
+  EXPECT_LT(std::abs(after.theta_rad), std::abs(before.theta_rad));  // the true heading is 0
+}
+
 /// One 22 m corridor mapped as a single room (no doorway), odometry drifting `drift_rad_per_m`:
 /// the final heading estimate and the map, with or without in-room glimpses.
 struct CorridorRun {

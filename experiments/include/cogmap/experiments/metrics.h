@@ -115,11 +115,16 @@ struct LocalizationAccuracy {
   double ate_rmse_odometry_m = 0.0;   ///< sqrt(mean |p_odom − p_true|²) over all frames
   double ate_rmse_corrected_m = 0.0;  ///< sqrt(mean |p_est − p_true|²) over all frames
   std::size_t frames = 0;             ///< frames with ground truth
+  /// heading_error_final_corrected_deg for the estimate once the run's last room is closed (its
+  /// EM correction applied, Mapper::finish), when given to evaluate_trajectory.
+  std::optional<double> heading_error_final_closed_deg;
 };
 
 /// Empty when no row has ground truth. Rows without truth are skipped; the final heading
-/// error uses the last row that has truth.
-std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows);
+/// error uses the last row that has truth. `closed_heading_rad`: the estimate's heading at the
+/// last row once the last room is closed (Mapper::finish), for heading_error_final_closed_deg.
+std::optional<LocalizationAccuracy> evaluate_trajectory(
+    TrajectoryView rows, std::optional<double> closed_heading_rad = std::nullopt);
 
 /// Per-room sizes for the memory comparison (thesis Table 4.2).
 struct RoomSize {

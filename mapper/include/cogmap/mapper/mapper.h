@@ -73,7 +73,8 @@ class Mapper {
   /// Integrates one frame; returns the id of a room finished during this frame.
   std::optional<int> process(const SensorFrame& frame);
 
-  /// Closes the current room (end of run); returns its id if it produced an ASR.
+  /// Closes the current room (end of run); returns its id if it produced an ASR. The room's
+  /// correction (EM) then applies to pose_estimate() as well.
   std::optional<int> finish();
 
   /// Odometry composed with the start pose, world frame.
