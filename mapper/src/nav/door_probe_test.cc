@@ -96,6 +96,30 @@ TEST(DoorProbe, ProbesOnlyAWallWithinRangeAcrossTheLine) {
   EXPECT_DOUBLE_EQ(open.v_mps, 0.5);  // the route speed, not the door speed
 }
 
+// A corridor's next point tens of metres beyond a wall across the line (the estimate's drift
+// puts the robot at a corner it has not reached, facing the corridor's side) has no door to
+// probe for: only a waypoint within the sonar's range, probe_max_goal_m (5 m), is probed.
+TEST(DoorProbe, DoesNotProbeForAWaypointBeyondTheSonarsRange) {
+  Probe p;
+  auto corridor = make_route_follower(RouteOptions{}, {Point2(36.0, 0.0)});
+  p.step(*corridor, 0, 1.55);
+  EXPECT_NE(corridor->trace().mode, NavMode::kDoorProbe);
+
+  // The same wall, the waypoint 5.1 m and 4.9 m away: the boundary is the waypoint's distance.
+  auto beyond = make_route_follower(RouteOptions{}, {Point2(5.1, 0.0)});
+  p.step(*beyond, 0, 1.55);
+  EXPECT_NE(beyond->trace().mode, NavMode::kDoorProbe);
+  auto within = make_route_follower(RouteOptions{}, {Point2(4.9, 0.0)});
+  p.step(*within, 0, 1.55);
+  EXPECT_EQ(within->trace().mode, NavMode::kDoorProbe);
+
+  RouteOptions farther;
+  farther.door.probe_max_goal_m = 40.0;
+  auto allowed = make_route_follower(farther, {Point2(36.0, 0.0)});
+  p.step(*allowed, 0, 1.55);
+  EXPECT_EQ(allowed->trace().mode, NavMode::kDoorProbe);
+}
+
 // Standing still in front of the wall, the probe gives up after probe_stall_s (3 s) without
 // coming progress_m nearer, before the 4 s stuck recovery.
 TEST(DoorProbe, GivesUpAfterProbeStallWithoutProgress) {

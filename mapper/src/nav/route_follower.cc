@@ -220,6 +220,7 @@ class RouteFollower final : public ReroutableFollower {
       probe_failed_at_.reset();
     }
     const double d = (goal - here).norm();
+    if (d > o.probe_max_goal_m) return std::nullopt;
     const double now = input.frame->time_s;
     // Only a wall across the line: sensed on both sides of it within VFH's radius (or within
     // the body's half-width of the line), and meeting it at probe_min_angle_deg or more. A

@@ -159,6 +159,9 @@ struct DoorOptions {
   /// their axes) and lets the clearing open it, instead of VFH swinging along the wall.
   double probe_range_m = 2.5;         ///< a sensed wall across the line to the waypoint nearer
                                       ///< than this is probed (VFH's window)
+  double probe_max_goal_m = 5.0;      ///< ...while the waypoint lies within the sonar's range
+                                      ///< (as search_max_goal_m): a corridor's next point
+                                      ///< tens of metres on has no door in that wall
   double probe_min_angle_deg = 45.0;  ///< ...meeting the line at least this steeply (a door's
                                       ///< wall is crossed, a corridor side is run along)
   double probe_rearm_m = 1.0;         ///< after a failed probe, probe again only this far away
