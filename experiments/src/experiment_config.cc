@@ -186,6 +186,9 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "em_drift_per_rad",
                      "em_smear_variance",
                      "em_min_direction_sigma_deg",
+                     "translation",
+                     "translation_max_offset_m",
+                     "translation_moves_estimate",
                      "glimpse",
                      "glimpse_distance_m",
                      "glimpse_turn_deg",
@@ -260,6 +263,11 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "em_min_direction_sigma_deg", 0.0, 45.0,
                 o.localizer.min_direction_sigma_rad * 180.0 / std::numbers::pi) *
       std::numbers::pi / 180.0;
+  o.translation.enabled = block.get_or<bool>("translation", o.translation.enabled);
+  o.translation.moves_estimate =
+      block.get_or<bool>("translation_moves_estimate", o.translation.moves_estimate);
+  o.translation.max_offset_m =
+      number_in(block, "translation_max_offset_m", 0.05, 10.0, o.translation.max_offset_m);
   o.glimpse.enabled = block.get_or<bool>("glimpse", o.glimpse.enabled);
   o.glimpse.distance_m = number_in(block, "glimpse_distance_m", 0.5, 100.0, o.glimpse.distance_m);
   o.glimpse.turn_rad = number_in(block, "glimpse_turn_deg", 10.0, 1e6,

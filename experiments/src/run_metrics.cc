@@ -84,6 +84,11 @@ RoomLocalizationReport room_localization_report(const mapper::Localization& l) {
   if (std::isfinite(l.prior_sigma_rad)) r.prior_sd_deg = l.prior_sigma_rad * kDegPerRad;
   r.gain = l.gain;
   r.applied = l.applied;
+  if (l.translation_tried) {
+    r.translation_m = std::array<double, 2>{l.translation_m.x(), l.translation_m.y()};
+    r.translation_applied = l.translation_applied;
+    r.translation_pairs = l.translation_pairs;
+  }
   return r;
 }
 
@@ -151,6 +156,11 @@ std::string metrics_json_text(const RunMetrics& m) {
                       {"prior_sd_deg", opt(l.prior_sd_deg)},
                       {"gain", l.gain},
                       {"applied", l.applied}};
+      if (l.translation_m) {
+        localization["translation_m"] = {(*l.translation_m)[0], (*l.translation_m)[1]};
+        localization["translation_applied"] = l.translation_applied;
+        localization["translation_pairs"] = l.translation_pairs;
+      }
     }
     rooms.push_back({{"id", r.size.id},
                      {"parent", r.parent ? Json(*r.parent) : Json(nullptr)},

@@ -57,6 +57,11 @@ struct Mapper::Impl {
   std::deque<Asr> resident;  ///< most recent finished rooms, newest last
   /// The accepted (|ρ| ≥ threshold) walls of the rooms in `resident`, world frame (corrected).
   std::deque<std::vector<Polyline>> resident_accepted;
+  /// The same walls as pieces facing the side they were seen from (the translation's reference).
+  std::deque<std::vector<FacingSegment>> resident_facing;
+  /// The correction the last finished room applied to the estimate (its placement, asr.pose,
+  /// but for a shift the map alone takes).
+  Pose2 last_room_fix;
   /// Variance of the heading error left after the last localised room, rad² (the start pose
   /// is known: 0). Grows by each room's drift, shrinks by (1 - gain) when EM corrects.
   double heading_variance_rad2 = 0.0;
@@ -115,6 +120,10 @@ struct Mapper::Impl {
 
   std::optional<int> finish_room(double time_s, const std::optional<BoundaryEvent>& leaving);
   Localization localize(const Asr& asr, const AsrTrace& trace) const;
+  /// The shift of a room (after EM's rotation `rotated`) from its walls' offsets against the
+  /// reference rooms' (options.translation); records it in `localized`.
+  Pose2 translate(const Asr& asr, const AsrTrace& trace, const Pose2& rotated,
+                  std::optional<Localization>& localized);
 };
 
 void Mapper::Impl::finish_glimpse(const Pose2& pose) {
@@ -178,6 +187,35 @@ Localization Mapper::Impl::localize(const Asr& asr, const AsrTrace& trace) const
   return fix;
 }
 
+Pose2 Mapper::Impl::translate(const Asr& asr, const AsrTrace& trace, const Pose2& rotated,
+                              std::optional<Localization>& localized) {
+  // The new room's accepted walls and path with EM's rotation applied, against the reference
+  // rooms' walls (world frame, corrected).
+  std::vector<Polyline> walls = accepted_walls(trace);
+  for (Polyline& line : walls) {
+    for (Point2& p : line) p = rotated.transform(p);
+  }
+  std::vector<Point2> path;
+  for (const Point2& p : asr.path) path.push_back(rotated.transform(p));
+  const std::vector<FacingSegment> current =
+      facing_segments(walls, path, options.translation.min_segment_m);
+  std::vector<FacingSegment> reference;
+  for (const std::vector<FacingSegment>& room_walls : resident_facing) {
+    reference.insert(reference.end(), room_walls.begin(), room_walls.end());
+  }
+  const TranslationFix fix = estimate_translation(reference, current, options.translation);
+  if (localized) {
+    localized->translation_tried = true;
+    localized->translation_pairs = fix.pairs;
+    localized->translation_applied = fix.applied;
+    localized->translation_m = fix.shift;
+  }
+  if (!fix.applied) return rotated;
+  ++stats.translations;
+  stats.translation_abs_m += fix.shift.norm();
+  return Pose2{fix.shift.x(), fix.shift.y(), 0.0}.compose(rotated);
+}
+
 std::optional<int> Mapper::Impl::finish_room(double time_s,
                                              const std::optional<BoundaryEvent>& leaving) {
   const auto build_start = std::chrono::steady_clock::now();
@@ -221,17 +259,33 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
       asr.heading_correction_rad = fix.rotation_rad;
     }
   }
-  asr.pose = room_correction;
+  // The room is placed by EM's rotation and, with options.translation, shifted onto the walls
+  // it shares with rooms mapped before it; the estimate the robot steers by takes the shift
+  // only with options.translation.moves_estimate (docs/algorithms.md, "Translation from
+  // revisited walls").
+  Pose2 placed = room_correction;
+  if (options.localization == LocalizationKind::kEm && options.translation.enabled &&
+      !resident_facing.empty()) {
+    placed = translate(asr, trace_in, room_correction, localized);
+  }
+  asr.pose = placed;
   // Everything mapped from here on is corrected too: the robot's estimate turns with the room.
-  correction = room_correction.compose(correction);
+  last_room_fix = options.translation.moves_estimate ? placed : room_correction;
+  correction = last_room_fix.compose(correction);
   std::vector<Polyline> accepted_world = accepted_walls(trace_in);
   for (Polyline& line : accepted_world) {
     for (Point2& p : line) p = asr.pose.transform(p);
   }
-  resident_accepted.push_back(std::move(accepted_world));
-  if (resident_accepted.size() > std::max<std::size_t>(options.localizer.reference_rooms, 1)) {
-    resident_accepted.pop_front();
+  if (options.translation.enabled) {
+    std::vector<Point2> path_world;
+    for (const Point2& p : asr.path) path_world.push_back(asr.pose.transform(p));
+    resident_facing.push_back(
+        facing_segments(accepted_world, path_world, options.translation.min_segment_m));
   }
+  resident_accepted.push_back(std::move(accepted_world));
+  const std::size_t keep = std::max<std::size_t>(options.localizer.reference_rooms, 1);
+  if (resident_accepted.size() > keep) resident_accepted.pop_front();
+  if (resident_facing.size() > keep) resident_facing.pop_front();
 
   store.save(asr);
   graph.add_node({asr.id, asr.pose, asr.pose.transform(asr.reference_point)});
@@ -292,7 +346,7 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   if (event && frame.time_s - m.room.start_time_s() >= m.options.min_room_duration_s) {
     finished = m.finish_room(frame.time_s, event);
     // The finished room's correction applies from now on: re-express pose and exit.
-    const Pose2 fix = m.resident.back().pose;
+    const Pose2 fix = m.last_room_fix;
     pose = m.estimate(frame.odometry);
     const Exit entry{fix.transform(event->exit_center),
                      event->exit_width_m,

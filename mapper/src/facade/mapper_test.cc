@@ -29,10 +29,11 @@ std::optional<double> cast(const Point2& origin, double heading_rad,
 }
 
 /// Frames of a robot driving the waypoints at 0.5 m/s with ideal sonar (axis ray only).
-/// `drift_rad_per_m` rotates the odometry heading in proportion to the distance driven.
+/// `drift_rad_per_m` rotates the odometry heading in proportion to the distance driven;
+/// `slip_m_per_m` moves the odometry sideways (to the left of the heading) as it drives.
 std::vector<SensorFrame> drive(const std::vector<Point2>& waypoints,
                                const std::vector<Segment>& walls, const RobotGeometry& robot,
-                               double drift_rad_per_m) {
+                               double drift_rad_per_m, double slip_m_per_m = 0.0) {
   std::vector<SensorFrame> frames;
   const double step_m = 0.05;  // 0.5 m/s at 10 Hz
   double time_s = 0.0, travelled_m = 0.0;
@@ -46,8 +47,9 @@ std::vector<SensorFrame> drive(const std::vector<Point2>& waypoints,
       const Pose2 truth{p.x(), p.y(), heading};
       travelled_m += step_m;
       const double odom_heading = heading + drift_rad_per_m * travelled_m;
-      odom = {odom.x_m + step_m * std::cos(odom_heading),
-              odom.y_m + step_m * std::sin(odom_heading), wrap_angle_rad(odom_heading)};
+      odom = {odom.x_m + step_m * (std::cos(odom_heading) - slip_m_per_m * std::sin(odom_heading)),
+              odom.y_m + step_m * (std::sin(odom_heading) + slip_m_per_m * std::cos(odom_heading)),
+              wrap_angle_rad(odom_heading)};
       SensorFrame f;
       time_s += 0.1;
       f.time_s = time_s;
@@ -192,6 +194,61 @@ TEST(Mapper, FinishTurnsTheEstimateByTheLastRoomsCorrection) {
   const Pose2 after = mapper.pose_estimate();
   EXPECT_NEAR(wrap_angle_rad(after.theta_rad - before.theta_rad), correction_rad, 1e-12);
   EXPECT_LT(std::abs(after.theta_rad), std::abs(before.theta_rad));  // the true heading is 0
+}
+
+/// A 22 m corridor cut into 4 m ASRs while the odometry slips sideways 2 cm per metre (no
+/// heading drift): the walls of each cut lie 8 cm further off than the last cut's.
+struct SlipRun {
+  Pose2 final_estimate;
+  double median_wall_error_m = 0.0;
+  MapperStats stats;
+};
+
+SlipRun map_slipping_corridor(bool translation, bool moves_estimate) {
+  const RobotGeometry robot = p2at_geometry();
+  const std::vector<Segment> walls{{{-1.0, -1.2}, {25.0, -1.2}}, {{-1.0, 1.2}, {25.0, 1.2}}};
+  const auto frames = drive({{0.0, 0.0}, {22.0, 0.0}}, walls, robot, 0.0, 0.02);
+  MapperOptions options;
+  options.boundary = BoundaryKind::kDistance;
+  options.distance.asr_distance_m = 4.0;
+  options.translation.enabled = translation;
+  options.translation.moves_estimate = moves_estimate;
+  MemoryAsrStore store;
+  Mapper mapper(options, robot, store, Pose2{});
+  for (const SensorFrame& f : frames) mapper.process(f);
+  SlipRun out;
+  mapper.finish();
+  out.final_estimate = mapper.pose_estimate();
+  out.median_wall_error_m = median_wall_error(mapper.master_map(true), walls);
+  out.stats = mapper.stats();
+  return out;
+}
+
+TEST(Mapper, TranslationPlacesTheMapOnlyByDefault) {
+  EXPECT_TRUE(MapperOptions{}.translation.enabled);
+  EXPECT_FALSE(MapperOptions{}.translation.moves_estimate);
+}
+
+// Each cut is shifted back onto the corridor walls of the cuts before it: the map stays where
+// the first cut put it, while the estimate the robot steers by keeps odometry's slip unless the
+// shift is applied to it too.
+TEST(Mapper, TranslationPutsEachCutBackOnTheWallsSeenBefore) {
+  const SlipRun off = map_slipping_corridor(false, false);
+  const SlipRun map_only = map_slipping_corridor(true, false);
+  const SlipRun moved = map_slipping_corridor(true, true);
+  EXPECT_EQ(off.stats.translations, 0u);
+  EXPECT_EQ(map_only.stats.translations, 5u);  // 6 cuts, the first has no reference
+  // Without it the 44 cm of slip spreads the walls (measured 0.211 m); with it the map stays
+  // on them (0.051 m, the 10 cm cells' quantisation).
+  EXPECT_GT(off.median_wall_error_m, 0.18);
+  EXPECT_LT(map_only.median_wall_error_m, 0.065);
+  // The map only: the estimate is odometry's, 0.44 m to the left at the end.
+  EXPECT_NEAR(map_only.final_estimate.y_m, off.final_estimate.y_m, 1e-6);
+  EXPECT_NEAR(off.final_estimate.y_m, 0.44, 0.01);
+  // Moved too: the estimate is back near the corridor's centre line (measured 0.042 m: the
+  // last cut's own 8 cm of slip, half of it before its middle).
+  EXPECT_LT(std::abs(moved.final_estimate.y_m), 0.055);
+  EXPECT_LT(moved.median_wall_error_m, 0.065);
 }
 
 /// One 22 m corridor mapped as a single room (no doorway), odometry drifting `drift_rad_per_m`:

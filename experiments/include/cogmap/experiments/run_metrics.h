@@ -3,6 +3,7 @@
 /// extras (per-room sizes, rejected readings, the map before localisation). Metrics that need
 /// ground truth are omitted, not faked, when there is none.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -25,6 +26,11 @@ struct RoomLocalizationReport {
   std::optional<double> prior_sd_deg;  ///< odometry's prior on the rotation (none: no prior)
   double gain = 0.0;                   ///< the share of the measurement applied
   bool applied = false;                ///< false: too little wall, too big, or gated out
+  /// With mapper.translation: the shift applied after the rotation (metres, x and y; zero when
+  /// not applied), whether it was, and the wall pairs that measured it. None otherwise.
+  std::optional<std::array<double, 2>> translation_m;
+  bool translation_applied = false;
+  int translation_pairs = 0;
 };
 
 /// The report of EM's answer, in degrees.

@@ -16,6 +16,7 @@
 #include "cogmap/mapper/grid/grid_updater.h"
 #include "cogmap/mapper/localization/glimpse_heading.h"
 #include "cogmap/mapper/localization/localizer.h"
+#include "cogmap/mapper/localization/wall_offsets.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
 #include "cogmap/mapper/seam/sensor_frame.h"
 
@@ -30,6 +31,7 @@ struct MapperOptions {
   DistanceOptions distance;
   LocalizationKind localization = LocalizationKind::kEm;
   LocalizerOptions localizer;
+  TranslationOptions translation;    ///< a room's shift from the offsets of walls seen before
   GlimpseOptions glimpse;            ///< in-room heading correction by short glimpses
   double min_room_duration_s = 2.0;  ///< boundaries closer in time than this are ignored
   /// A room whose path spans more than this (metres, either axis) ends there, as a distance cut
@@ -51,6 +53,8 @@ struct MapperStats {
   std::size_t glimpses = 0;                 ///< glimpses measured (in-room heading correction)
   std::size_t glimpse_corrections = 0;      ///< of which EM applied a rotation
   double glimpse_correction_abs_rad = 0.0;  ///< Σ |glimpse rotations|
+  std::size_t translations = 0;             ///< rooms shifted by their wall offsets
+  double translation_abs_m = 0.0;           ///< Σ |those shifts|
 };
 
 class Mapper {

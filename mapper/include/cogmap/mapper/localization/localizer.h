@@ -115,6 +115,12 @@ struct Localization {
   double measurement_sigma_rad = 0.0;
   double prior_sigma_rad = std::numeric_limits<double>::infinity();  ///< the prior used
   double gain = 1.0;  ///< prior² / (prior² + measurement²): the share of the measurement applied
+  /// The shift applied after the rotation (mapper.translation, wall offsets; zero unless
+  /// translation_applied) and the wall pairs that measured it.
+  Point2 translation_m{0.0, 0.0};
+  int translation_pairs = 0;
+  bool translation_applied = false;
+  bool translation_tried = false;  ///< the mapper measured a shift (mapper.translation on)
 };
 
 /// Estimates the drift in heading of a new ASR against the rooms mapped before it.
