@@ -48,7 +48,7 @@ struct MapperStats {
   RejectedReadings rejected;
   std::size_t rooms = 0;
   double build_time_s = 0.0;         ///< CPU spent in the room -> ASR pipeline
-  double localization_time_s = 0.0;  ///< CPU spent in EM
+  double localization_time_s = 0.0;  ///< CPU spent in EM and the translation
   std::size_t peak_grid_bytes = 0;
   std::size_t glimpses = 0;                 ///< glimpses measured (in-room heading correction)
   std::size_t glimpse_corrections = 0;      ///< of which EM applied a rotation
