@@ -66,6 +66,9 @@ class Canvas {
   Image finish();
 
  private:
+  /// Unbinds the context; destroys it if this canvas made its own, else gives it back.
+  void release_context();
+
   struct QueuedText {
     std::string text;
     int size_px;
@@ -81,6 +84,7 @@ class Canvas {
   Font& font_;
   std::vector<std::uint8_t> buffer_;  // OSMesa's colour buffer, bottom row first
   void* context_ = nullptr;           // OSMesaContext, opaque so GL headers stay in canvas.cc
+  bool owns_context_ = false;         // false: the thread's kept context (canvas.cc)
   std::vector<QueuedText> texts_;
 };
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "canvas.h"
 #include "cogmap/render/figures.h"
@@ -134,6 +135,40 @@ TEST(Canvas, GridCellsTakeTheirHimmColours) {
   }
   EXPECT_TRUE(is_dark(image.at(10, 10)));
   EXPECT_GT(image.at(30, 10).r, image.at(50, 10).r);  // empty lighter than unexplored
+}
+
+// A scene that sets every piece of GL state a figure uses: dashes, wide lines, points, a
+// textured grid, a clipped panel.
+Image busy_scene(int width_px, int height_px) {
+  Style style;
+  Font font(find_font_file());
+  Canvas canvas(width_px, height_px, style, font);
+  Bounds b;
+  b.add(Point2(0.0, 0.0));
+  b.add(Point2(4.0, 2.0));
+  canvas.use_world(WorldView({5, 5, width_px - 10, height_px - 10}, b));
+  mapper::HistogramGrid grid(mapper::GridGeometry(0.0, 0.0, 1000.0, 4, 2), 0.0f);
+  grid.set({1, 1}, 15.0f);
+  canvas.grid(grid, b);
+  canvas.segments({{Point2(0.2, 0.2), Point2(3.8, 1.8)}}, {0, 0, 0}, 5.0f, true);
+  canvas.points({Point2(2.0, 1.0)}, {0.8f, 0.0f, 0.0f}, 9.0f);
+  canvas.use_pixels();
+  canvas.stroke_rect(2, 2, width_px - 3, height_px - 3, {0.0f, 0.0f, 0.8f}, 3.0f);
+  return canvas.finish();
+}
+
+TEST(Canvas, AFigureAfterAnotherOnOneThreadDrawsAsTheFirstFigureOfAThread) {
+  // The thread's OSMesa context is kept from canvas to canvas: nothing the last figure left
+  // (its size, its state) may show in the next.
+  Image first_of_a_thread;
+  std::thread([&] { first_of_a_thread = busy_scene(120, 70); }).join();
+  const Image bigger = busy_scene(300, 200);
+  const Image after_another = busy_scene(120, 70);
+  ASSERT_EQ(bigger.width(), 300);
+  ASSERT_EQ(after_another.width(), 120);
+  ASSERT_EQ(after_another.height(), 70);
+  EXPECT_TRUE(after_another.pixels() == first_of_a_thread.pixels());
+  EXPECT_GT(count_near(after_another, {0.0f, 0.0f, 0.0f}, 60), 20);  // the dashed line is there
 }
 
 TEST(Font, TextInksOnlyItsBox) {
