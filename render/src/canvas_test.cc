@@ -188,6 +188,24 @@ TEST(Font, TextInksOnlyItsBox) {
   EXPECT_GT(w, 40);
 }
 
+TEST(Font, KeptGlyphsRasteriseAsAFreshFaceDoes) {
+  // The glyphs of "room" are kept at 20 px after the first text; at 13 px they are new.
+  Font& kept = thread_font();
+  (void)kept.rasterize("room 12", 20);
+  const AlphaMask again = kept.rasterize("mirror", 20);
+  const AlphaMask other_size = kept.rasterize("mirror", 13);
+  Font fresh(find_font_file());
+  const AlphaMask first = fresh.rasterize("mirror", 20);
+  EXPECT_EQ(again.width_px, first.width_px);
+  EXPECT_EQ(again.height_px, first.height_px);
+  EXPECT_EQ(again.baseline_px, first.baseline_px);
+  EXPECT_TRUE(again.alpha == first.alpha);
+  const AlphaMask first_small = fresh.rasterize("mirror", 13);
+  EXPECT_LT(other_size.width_px, again.width_px);
+  EXPECT_TRUE(other_size.alpha == first_small.alpha);
+  EXPECT_EQ(&thread_font(), &kept);  // the same face while the font file is the same
+}
+
 TEST(Png, RoundTripsSizeAndPixels) {
   TempDir dir;
   Image image(7, 5);

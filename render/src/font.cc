@@ -109,6 +109,39 @@ int Font::line_height_px(int size_px) {
   return static_cast<int>((m.ascender - m.descender + 63) >> 6);
 }
 
+const Font::Glyph& Font::glyph(unsigned index, int size_px) {
+  const auto key = std::make_pair(size_px, index);
+  if (const auto it = glyphs_.find(key); it != glyphs_.end()) return it->second;
+  Glyph g;
+  auto face = static_cast<FT_Face>(face_);
+  // One load renders the bitmap and gives the advance (rendering changes no metric).
+  if (FT_Load_Glyph(face, index, FT_LOAD_RENDER) == 0) {
+    const FT_GlyphSlot slot = face->glyph;
+    const FT_Bitmap& bitmap = slot->bitmap;
+    g.loaded = true;
+    g.advance_x = slot->advance.x;
+    g.left = slot->bitmap_left;
+    g.top = slot->bitmap_top;
+    g.width = bitmap.width;
+    g.rows = bitmap.rows;
+    g.coverage.resize(static_cast<std::size_t>(bitmap.width) * bitmap.rows);
+    for (unsigned row = 0; row < bitmap.rows; ++row) {
+      for (unsigned col = 0; col < bitmap.width; ++col) {
+        g.coverage[static_cast<std::size_t>(row) * bitmap.width + col] =
+            bitmap.buffer[static_cast<std::ptrdiff_t>(row) * bitmap.pitch + col];
+      }
+    }
+  }
+  return glyphs_.emplace(key, std::move(g)).first->second;
+}
+
+Font& thread_font() {
+  thread_local std::unique_ptr<Font> font;
+  const std::filesystem::path file = find_font_file();
+  if (!font || font->file_ != file) font = std::make_unique<Font>(file);
+  return *font;
+}
+
 AlphaMask Font::rasterize(std::string_view text, int size_px) {
   set_size(size_px);
   auto face = static_cast<FT_Face>(face_);
@@ -132,24 +165,23 @@ AlphaMask Font::rasterize(std::string_view text, int size_px) {
       }
     }
     pen_x[i] = pen;
-    if (FT_Load_Glyph(face, glyphs[i], FT_LOAD_DEFAULT) != 0) continue;
-    pen += face->glyph->advance.x;
+    const Glyph& g = glyph(glyphs[i], size_px);
+    if (g.loaded) pen += g.advance_x;
   }
   mask.width_px = static_cast<int>((pen + 63) >> 6) + 1;
   mask.alpha.assign(static_cast<std::size_t>(mask.width_px) * mask.height_px, 0);
 
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
-    if (FT_Load_Glyph(face, glyphs[i], FT_LOAD_RENDER) != 0) continue;
-    const FT_GlyphSlot slot = face->glyph;
-    const FT_Bitmap& bitmap = slot->bitmap;
-    const int left = static_cast<int>(pen_x[i] >> 6) + slot->bitmap_left;
-    const int top = mask.baseline_px - slot->bitmap_top;
-    for (unsigned row = 0; row < bitmap.rows; ++row) {
-      for (unsigned col = 0; col < bitmap.width; ++col) {
+    const Glyph& g = glyph(glyphs[i], size_px);
+    if (!g.loaded) continue;
+    const int left = static_cast<int>(pen_x[i] >> 6) + g.left;
+    const int top = mask.baseline_px - g.top;
+    for (unsigned row = 0; row < g.rows; ++row) {
+      for (unsigned col = 0; col < g.width; ++col) {
         const int x = left + static_cast<int>(col), y = top + static_cast<int>(row);
         if (x < 0 || y < 0 || x >= mask.width_px || y >= mask.height_px) continue;
         std::uint8_t& dst = mask.alpha[static_cast<std::size_t>(y) * mask.width_px + x];
-        dst = std::max(dst, bitmap.buffer[row * bitmap.pitch + col]);
+        dst = std::max(dst, g.coverage[static_cast<std::size_t>(row) * g.width + col]);
       }
     }
   }

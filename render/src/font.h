@@ -2,8 +2,12 @@
 // Text for figures: a FreeType face rasterised into alpha masks and blended into an Image.
 // Figures draw text after the GL pass, on the read-back pixels, so glyphs never go through GL.
 
+#include <cstdint>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cogmap/render/image.h"
@@ -28,7 +32,8 @@ struct AlphaMask {
   std::vector<std::uint8_t> alpha;  ///< width_px * height_px coverage values
 };
 
-/// One FreeType face. Not thread-safe; figures are drawn under one lock (figure_lock.h).
+/// One FreeType face, with the glyphs it has rendered kept by size. Not thread-safe: each
+/// thread draws with its own (thread_font()).
 class Font {
  public:
   /// Loads `file`; throws std::runtime_error with the path if FreeType cannot read it.
@@ -51,10 +56,27 @@ class Font {
             HAlign h, VAlign v, bool vertical = false);
 
  private:
+  /// A rendered glyph: what rasterize() reads of FreeType's glyph slot.
+  struct Glyph {
+    bool loaded = false;  // false: FreeType could not load it (drawn as nothing, no advance)
+    long advance_x = 0;   // 26.6 fixed point
+    int left = 0, top = 0;
+    unsigned width = 0, rows = 0;
+    std::vector<std::uint8_t> coverage;  // rows * width
+  };
+  const Glyph& glyph(unsigned index, int size_px);
+  friend Font& thread_font();
+
   void set_size(int size_px);
   void* library_ = nullptr;  // FT_Library, kept opaque so no FreeType header leaks out
   void* face_ = nullptr;     // FT_Face
   std::filesystem::path file_;
+  std::map<std::pair<int, unsigned>, Glyph> glyphs_;  // (size_px, glyph index)
 };
+
+/// The figures' font on this thread (find_font_file()), loaded once and kept with its rendered
+/// glyphs: a figure's labels repeat the same few glyphs, and the face is parsed once, not per
+/// figure. Loaded again if find_font_file() names another file.
+Font& thread_font();
 
 }  // namespace cogmap::render

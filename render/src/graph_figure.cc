@@ -24,7 +24,7 @@ void write_graph_figure(const mapper::AsrGraph& graph, const std::string& title,
 void write_graph_figure(const std::vector<mapper::AsrNode>& nodes,
                         const std::vector<mapper::AsrEdge>& edges, const std::string& title,
                         const std::filesystem::path& png, const Style& style) {
-  Font font(find_font_file());
+  Font& font = thread_font();
   std::map<int, mapper::Point2> node_at;
   Bounds bounds;
   for (const auto& n : nodes) {

@@ -37,7 +37,7 @@ void write_map_error_figure(const MapErrorFigure& figure, const std::filesystem:
     throw std::invalid_argument("cogmap render: pieces and error_m differ in size (" +
                                 png.string() + ")");
   }
-  Font font(find_font_file());
+  Font& font = thread_font();
   Bounds bounds;
   bounds.add(figure.true_surfaces);
   bounds.add(figure.pieces);

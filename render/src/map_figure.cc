@@ -55,7 +55,7 @@ void write_map_figure(const MapFigure& figure, const std::filesystem::path& png,
     throw std::invalid_argument("cogmap render: room_labels_at and room_labels differ in size (" +
                                 png.string() + ")");
   }
-  Font font(find_font_file());
+  Font& font = thread_font();
   // One window for both panels, so a wall's shift under localisation is visible as a shift.
   Bounds bounds;
   bounds.add(figure.true_surfaces);

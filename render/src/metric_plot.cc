@@ -60,7 +60,7 @@ void write_metric_plot(const std::string& title, const std::string& x_label,
   const std::vector<double> x_ticks = nice_ticks(x_lo, x_hi, 6);
   const std::vector<double> y_ticks = nice_ticks(y_lo, y_hi, 6);
 
-  Font font(find_font_file());
+  Font& font = thread_font();
   const int title_h = title.empty() ? 0 : font.line_height_px(style.title_font_px) + 8;
   const FigureLayout layout = layout_figure(1, 1, !title.empty(), title_h, style);
   Canvas canvas(layout.width_px, layout.height_px, style, font);

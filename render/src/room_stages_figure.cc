@@ -67,7 +67,7 @@ std::vector<LegendEntry> grid_legend(const Style& style, bool with_path_line) {
 
 void write_room_stages_figure(const mapper::AsrTrace& trace, const std::string& title,
                               const std::filesystem::path& png, const Style& style) {
-  Font font(find_font_file());
+  Font& font = thread_font();
   Bounds data;
   add_explored(data, trace.raw);
   add_explored(data, trace.cleaned);
