@@ -4,6 +4,7 @@
 #include <GL/osmesa.h>
 
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -272,13 +273,18 @@ Image Canvas::finish() {
   if (glGetError() != GL_NO_ERROR)
     throw std::runtime_error("cogmap render: GL error while drawing");
   Image image(width_, height_);
-  // OSMesa's buffer has the bottom row first (OSMESA_Y_UP); images have the top row first.
+  // OSMesa's buffer has the bottom row first (OSMESA_Y_UP); images have the top row first. Its
+  // RGBA bytes are an Rgba8's, but blending left alpha below 255 where lines were drawn: rows
+  // are copied whole, then made opaque (both passes vectorise; a pixel-by-pixel copy was 9 %
+  // of a run with figures).
+  static_assert(sizeof(Rgba8) == 4, "Rgba8 must be the buffer's 4 bytes");
+  const std::size_t row_bytes = static_cast<std::size_t>(width_) * 4;
+  auto* pixels = reinterpret_cast<std::uint8_t*>(image.pixels().data());
   for (int y = 0; y < height_; ++y) {
-    const std::uint8_t* row = &buffer_[static_cast<std::size_t>(height_ - 1 - y) * width_ * 4];
-    for (int x = 0; x < width_; ++x) {
-      image.at(x, y) = {row[4 * x], row[4 * x + 1], row[4 * x + 2], 255};
-    }
+    std::memcpy(pixels + static_cast<std::size_t>(y) * row_bytes,
+                &buffer_[static_cast<std::size_t>(height_ - 1 - y) * row_bytes], row_bytes);
   }
+  for (Rgba8& p : image.pixels()) p.a = 255;
   for (const auto& t : texts_) {
     font_.draw(image, t.text, t.size_px, t.color, t.x_px, t.y_px, t.h, t.v, t.vertical);
   }

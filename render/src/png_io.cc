@@ -45,8 +45,8 @@ struct PngErrorSink {
 
 void on_png_warning(png_structp, png_const_charp) {}
 
-// Encodes `rgb` (rows top first, 3 bytes a pixel) into `file`. Only C objects live in this
-// frame, as libpng leaves it by longjmp on an error.
+// Encodes `rgba` (rows top first, 4 bytes a pixel, the alpha byte dropped) into `file` as RGB. Only
+// C objects live in this frame, as libpng leaves it by longjmp on an error.
 //
 // The row filter is None: the figures are line art on flat fills, for which libpng's default
 // (every filter tried per row, the one with the smallest sum of differences kept) spends half the
@@ -54,7 +54,7 @@ void on_png_warning(png_structp, png_const_charp) {}
 // (zlib level 6 either way): a room's stage figure (2480 x 1045) 50 -> 26 ms and 61.0 -> 66.6 kB,
 // the room graph 7.8 -> 4.3 ms and 27.8 -> 25.0 kB, the map before/after 16.7 -> 9.9 ms and
 // 78.6 -> 81.7 kB (docs/performance.md, "Figures").
-bool encode_rgb(std::FILE* file, const std::uint8_t* rgb, png_uint_32 width, png_uint_32 height,
+bool encode_rgb(std::FILE* file, const std::uint8_t* rgba, png_uint_32 width, png_uint_32 height,
                 PngErrorSink* sink) {
   png_structp png =
       png_create_write_struct(PNG_LIBPNG_VER_STRING, sink, on_png_error, on_png_warning);
@@ -78,9 +78,10 @@ bool encode_rgb(std::FILE* file, const std::uint8_t* rgb, png_uint_32 width, png
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
   png_set_compression_level(png, 6);  // zlib's default, as the simplified API used
   png_write_info(png, info);
-  const std::size_t stride = static_cast<std::size_t>(width) * 3;
+  png_set_filler(png, 0, PNG_FILLER_AFTER);  // the rows carry a fourth byte: drop it
+  const std::size_t stride = static_cast<std::size_t>(width) * 4;
   for (png_uint_32 y = 0; y < height; ++y) {
-    png_write_row(png, rgb + static_cast<std::size_t>(y) * stride);
+    png_write_row(png, rgba + static_cast<std::size_t>(y) * stride);
   }
   png_write_end(png, info);
   png_destroy_write_struct(&png, &info);
@@ -100,13 +101,10 @@ void write_png(const Image& image, const std::filesystem::path& png) {
                       "cannot create directory " + parent.string() + " (" + ec.message() + ")");
   }
 
-  // The file carries no alpha: figures are opaque, and RGB is a quarter smaller.
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(image.width()) * image.height() * 3);
-  for (std::size_t i = 0; i < image.pixels().size(); ++i) {
-    rgb[3 * i] = image.pixels()[i].r;
-    rgb[3 * i + 1] = image.pixels()[i].g;
-    rgb[3 * i + 2] = image.pixels()[i].b;
-  }
+  // The file carries no alpha: figures are opaque, and RGB is a quarter smaller. libpng drops
+  // the alpha byte of each pixel as it writes the rows (png_set_filler).
+  static_assert(sizeof(Rgba8) == 4, "Rgba8 must be 4 packed bytes for libpng");
+  const auto* rgba = reinterpret_cast<const std::uint8_t*>(image.pixels().data());
   const std::filesystem::path temp = temp_path_for(png);
   std::FILE* file = std::fopen(temp.c_str(), "wb");
   if (file == nullptr) {
@@ -114,7 +112,7 @@ void write_png(const Image& image, const std::filesystem::path& png) {
         png, "cannot write PNG (cannot open " + temp.string() + ": " + std::strerror(errno) + ")");
   }
   PngErrorSink sink;
-  const bool encoded = encode_rgb(file, rgb.data(), static_cast<png_uint_32>(image.width()),
+  const bool encoded = encode_rgb(file, rgba, static_cast<png_uint_32>(image.width()),
                                   static_cast<png_uint_32>(image.height()), &sink);
   const bool flushed = std::fflush(file) == 0 && std::ferror(file) == 0;
   const bool closed = std::fclose(file) == 0;
