@@ -54,8 +54,8 @@ void on_png_warning(png_structp, png_const_charp) {}
 // (zlib level 6 either way): a room's stage figure (2480 x 1045) 50 -> 26 ms and 61.0 -> 66.6 kB,
 // the room graph 7.8 -> 4.3 ms and 27.8 -> 25.0 kB, the map before/after 16.7 -> 9.9 ms and
 // 78.6 -> 81.7 kB (docs/performance.md, "Figures").
-bool encode_rgb(std::FILE* file, const std::uint8_t* rgba, png_uint_32 width, png_uint_32 height,
-                PngErrorSink* sink) {
+bool encode_as_rgb(std::FILE* file, const std::uint8_t* rgba, png_uint_32 width, png_uint_32 height,
+                   PngErrorSink* sink) {
   png_structp png =
       png_create_write_struct(PNG_LIBPNG_VER_STRING, sink, on_png_error, on_png_warning);
   if (png == nullptr) {
@@ -112,8 +112,8 @@ void write_png(const Image& image, const std::filesystem::path& png) {
         png, "cannot write PNG (cannot open " + temp.string() + ": " + std::strerror(errno) + ")");
   }
   PngErrorSink sink;
-  const bool encoded = encode_rgb(file, rgba, static_cast<png_uint_32>(image.width()),
-                                  static_cast<png_uint_32>(image.height()), &sink);
+  const bool encoded = encode_as_rgb(file, rgba, static_cast<png_uint_32>(image.width()),
+                                     static_cast<png_uint_32>(image.height()), &sink);
   const bool flushed = std::fflush(file) == 0 && std::ferror(file) == 0;
   const bool closed = std::fclose(file) == 0;
   if (!encoded || !flushed || !closed) {
