@@ -69,7 +69,8 @@ std::vector<Point2> subsample_path(std::span<const Point2> path, double step_m) 
 
 void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& index,
                           std::span<const Point2> poses, const MapMetricsOptions& options,
-                          std::vector<std::uint8_t>& seen) {
+                          std::vector<std::uint8_t>& seen, std::vector<std::uint32_t>* hidden_by) {
+  constexpr std::uint32_t kNoSurface = std::numeric_limits<std::uint32_t>::max();
   const double range2 = options.sonar_max_range_m * options.sonar_max_range_m;
   // The sight line stops just short of the sample: a neighbouring surface that shares the
   // sample's corner would otherwise "block" it.
@@ -89,6 +90,7 @@ void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& in
   for_each_sample(truth, options.sample_step_m, [&](const SurfaceSample& s) {
     const std::size_t i = k++;
     if (i >= seen.size()) seen.resize(i + 1, 0);
+    if (hidden_by != nullptr && i >= hidden_by->size()) hidden_by->resize(i + 1, kNoSurface);
     if (seen[i]) return;
     if (s.point.x() < lo.x() - reach || s.point.x() > hi.x() + reach ||
         s.point.y() < lo.y() - reach || s.point.y() > hi.y() + reach) {
@@ -104,10 +106,22 @@ void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& in
         return;
       }
       const Point2 near_sample = s.point + d * (kEndGap_m / dist);
-      if (!index.blocked(near_sample, pose, s.segment)) {
+      if (hidden_by == nullptr) {
+        if (index.blocked(near_sample, pose, s.segment)) continue;
         seen[i] = 1;
         return;
       }
+      // The surface that hid the sample last is tried first: it crosses the sight line, so the
+      // walk would find a crossing too (it is listed in every cell it touches).
+      std::uint32_t& last = (*hidden_by)[i];
+      if (last != kNoSurface && index.crosses(near_sample, pose, last)) continue;
+      const std::size_t blocker = index.first_blocker(near_sample, pose, s.segment);
+      if (blocker != SegmentIndex::kNone) {
+        last = static_cast<std::uint32_t>(blocker);
+        continue;
+      }
+      seen[i] = 1;
+      return;
     }
   });
 }
@@ -129,7 +143,8 @@ std::vector<Point2> visible_truth_samples(std::span<const Segment> truth,
   const SegmentIndex index(truth, options.index_cell_m);
   const std::vector<Point2> poses = subsample_path(true_path, options.trajectory_step_m);
   std::vector<std::uint8_t> seen;
-  mark_visible_samples(truth, index, poses, options, seen);
+  std::vector<std::uint32_t> hidden_by;
+  mark_visible_samples(truth, index, poses, options, seen, &hidden_by);
   return marked_samples(truth, options.sample_step_m, seen);
 }
 

@@ -117,6 +117,17 @@ TEST(SegmentIndex, AnyWithinMatchesBruteForce) {
   EXPECT_FALSE(SegmentIndex({}, 0.5).any_within_m({0.0, 0.0}, 10.0));
 }
 
+TEST(SegmentIndex, FirstBlockerIsTheNearestOnTheWalkAndCrossesAgreesWithIt) {
+  const std::vector<Segment> segs{{{1, -1}, {1, 1}}, {{3, -1}, {3, 1}}};
+  const SegmentIndex index(segs, 0.5);
+  EXPECT_EQ(index.first_blocker({0, 0}, {5, 0}, SegmentIndex::kNone), 0u);
+  EXPECT_EQ(index.first_blocker({5, 0}, {0, 0}, SegmentIndex::kNone), 1u);  // walks from a
+  EXPECT_EQ(index.first_blocker({0, 0}, {5, 0}, 0), 1u);
+  EXPECT_EQ(index.first_blocker({0, 2}, {5, 2}, SegmentIndex::kNone), SegmentIndex::kNone);
+  EXPECT_TRUE(index.crosses({0, 0}, {5, 0}, 1));
+  EXPECT_FALSE(index.crosses({0, 0}, {2, 0}, 1));
+}
+
 TEST(SegmentIndex, BlockedHonoursExclusion) {
   const std::vector<Segment> segs{{{1, -1}, {1, 1}}, {{3, -1}, {3, 1}}};
   const SegmentIndex index(segs, 0.5);

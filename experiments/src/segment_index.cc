@@ -144,8 +144,13 @@ bool SegmentIndex::any_within_m(const Point2& p, double radius_m) const {
   return false;
 }
 
-bool SegmentIndex::blocked(const Point2& a, const Point2& b, std::size_t exclude) const {
-  if (segments_.empty()) return false;
+bool SegmentIndex::crosses(const Point2& a, const Point2& b, std::size_t i) const {
+  return segments_intersect(a, b, segments_[i].a, segments_[i].b);
+}
+
+std::size_t SegmentIndex::first_blocker(const Point2& a, const Point2& b,
+                                        std::size_t exclude) const {
+  if (segments_.empty()) return kNone;
   // Amanatides-Woo traversal of the cells the segment crosses, starting at `a`, so the
   // occluder nearest to `a` (usually in the first cells) ends the walk early.
   const double sx = (a.x() - origin_x_m_) / cell_m_, sy = (a.y() - origin_y_m_) / cell_m_;
@@ -163,7 +168,7 @@ bool SegmentIndex::blocked(const Point2& a, const Point2& b, std::size_t exclude
   for (int step = 0; step <= max_steps; ++step) {
     for (const std::uint32_t i : bucket(ix, iy)) {
       if (i == exclude) continue;
-      if (segments_intersect(a, b, segments_[i].a, segments_[i].b)) return true;
+      if (segments_intersect(a, b, segments_[i].a, segments_[i].b)) return i;
     }
     if (ix == end_x && iy == end_y) break;
     if (t_max_x < t_max_y) {
@@ -174,7 +179,7 @@ bool SegmentIndex::blocked(const Point2& a, const Point2& b, std::size_t exclude
       t_max_y += t_delta_y;
     }
   }
-  return false;
+  return kNone;
 }
 
 }  // namespace cogmap::experiments

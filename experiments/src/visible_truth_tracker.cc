@@ -66,7 +66,7 @@ void VisibleTruthTracker::work() {
         poses.swap(pending_);
         pending_.clear();
       }
-      mark_visible_samples(truth_, index, poses, options_, seen_);
+      mark_visible_samples(truth_, index, poses, options_, seen_, &hidden_by_);
       poses.clear();
     }
   } catch (...) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 #include "cogmap/experiments/segment_index.h"
@@ -75,6 +76,27 @@ TEST(MarkVisibleSamples, BatchesGiveTheSameAsOnePass) {
   const std::vector<Point2> seen = marked_samples(truth, opt.sample_step_m, once);
   EXPECT_EQ(seen.size(), 2u * (118u + 196u + 196u));
   for (const Point2& p : seen) EXPECT_LT(p.y(), 1.5);
+}
+
+TEST(MarkVisibleSamples, TheHidingSurfaceKeptChangesNoFlag) {
+  const auto truth = corridor();
+  const MapMetricsOptions opt;
+  const SegmentIndex index(truth, opt.index_cell_m);
+  const std::vector<Point2> poses{{1, 0}, {12, 0}, {25, 0}};
+  std::vector<std::uint8_t> plain, kept;
+  std::vector<std::uint32_t> hidden_by;
+  mark_visible_samples(truth, index, poses, opt, plain);
+  mark_visible_samples(truth, index, std::span(poses).first(1), opt, kept, &hidden_by);
+  mark_visible_samples(truth, index, std::span(poses).subspan(1), opt, kept, &hidden_by);
+  EXPECT_EQ(kept, plain);
+  ASSERT_EQ(hidden_by.size(), kept.size());
+  // The wall at y = 2 (samples 1200..1799) is hidden by the wall at y = 1 (segment 1) from
+  // every position in range; a sample no position reached keeps no surface.
+  const std::size_t behind_near_x1 = 1200 + 20;  // x = 1.025
+  EXPECT_EQ(hidden_by[behind_near_x1], 1u);
+  EXPECT_EQ(kept[behind_near_x1], 0);
+  const std::size_t out_of_reach = 1200 + 380;  // x = 19.025, beyond 5 m of every position
+  EXPECT_EQ(hidden_by[out_of_reach], std::numeric_limits<std::uint32_t>::max());
 }
 
 }  // namespace

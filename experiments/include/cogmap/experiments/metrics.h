@@ -70,10 +70,13 @@ class SegmentIndex;
 /// The test of visible_truth_samples in pieces: sets `seen[k]` for every sample k (in
 /// sample_segments order) of `truth` that one of `poses` sees (`index` built over `truth`).
 /// Samples already set are not tested again, so the poses can come in batches, in any order;
-/// `seen` grows to the sample count.
+/// `seen` grows to the sample count. `hidden_by`, if given, keeps from call to call the surface
+/// that last hid each sample; it is tried first against the next position (a wall's back face is
+/// hidden by its front face from everywhere), which changes only the speed, never the flags.
 void mark_visible_samples(std::span<const mapper::Segment> truth, const SegmentIndex& index,
                           std::span<const mapper::Point2> poses, const MapMetricsOptions& options,
-                          std::vector<std::uint8_t>& seen);
+                          std::vector<std::uint8_t>& seen,
+                          std::vector<std::uint32_t>* hidden_by = nullptr);
 
 /// The points of the samples of `truth` marked in `seen`, in sample_segments order.
 std::vector<mapper::Point2> marked_samples(std::span<const mapper::Segment> truth,

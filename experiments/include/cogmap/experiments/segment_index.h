@@ -31,7 +31,16 @@ class SegmentIndex {
   bool any_within_m(const mapper::Point2& p, double radius_m) const;
 
   /// True when some segment other than `exclude` intersects the closed segment from `a` to `b`.
-  bool blocked(const mapper::Point2& a, const mapper::Point2& b, std::size_t exclude) const;
+  bool blocked(const mapper::Point2& a, const mapper::Point2& b, std::size_t exclude) const {
+    return first_blocker(a, b, exclude) != kNone;
+  }
+  /// The first segment other than `exclude` found to intersect the closed segment from `a` to
+  /// `b`, walking from `a`; kNone when none does (then blocked() is false).
+  std::size_t first_blocker(const mapper::Point2& a, const mapper::Point2& b,
+                            std::size_t exclude) const;
+  /// True when segment `i` intersects the closed segment from `a` to `b` (the test the walk
+  /// makes: a segment found so implies blocked(), as it is listed in every cell it touches).
+  bool crosses(const mapper::Point2& a, const mapper::Point2& b, std::size_t i) const;
 
  private:
   struct Cell {

@@ -38,12 +38,13 @@ class VisibleTruthTracker {
 
   std::span<const mapper::Segment> truth_;
   MapMetricsOptions options_;
-  PathSubsampler path_;                  // main thread: which positions count...
-  std::vector<mapper::Point2> batch_;    // ...kept, not yet handed over
-  std::vector<mapper::Point2> pending_;  // handed over, not yet tested (under mutex_)
-  bool closing_ = false;                 // no more positions will come (under mutex_)
-  std::vector<std::uint8_t> seen_;       // worker: per sample, seen from some position
-  std::exception_ptr failure_;           // worker: what it threw
+  PathSubsampler path_;                   // main thread: which positions count...
+  std::vector<mapper::Point2> batch_;     // ...kept, not yet handed over
+  std::vector<mapper::Point2> pending_;   // handed over, not yet tested (under mutex_)
+  bool closing_ = false;                  // no more positions will come (under mutex_)
+  std::vector<std::uint8_t> seen_;        // worker: per sample, seen from some position
+  std::vector<std::uint32_t> hidden_by_;  // worker: per sample, the surface that last hid it
+  std::exception_ptr failure_;            // worker: what it threw
   std::mutex mutex_;
   std::condition_variable wake_;
   std::thread worker_;
