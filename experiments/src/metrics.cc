@@ -86,11 +86,13 @@ void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& in
     hi = hi.cwiseMax(pose);
   }
   const double reach = options.sonar_max_range_m + 1e-6;
+  std::vector<std::uint32_t> this_call_only;  // the caller keeps none: kept for this call
+  std::vector<std::uint32_t>& hiding = hidden_by != nullptr ? *hidden_by : this_call_only;
   std::size_t k = 0;
   for_each_sample(truth, options.sample_step_m, [&](const SurfaceSample& s) {
     const std::size_t i = k++;
     if (i >= seen.size()) seen.resize(i + 1, 0);
-    if (hidden_by != nullptr && i >= hidden_by->size()) hidden_by->resize(i + 1, kNoSurface);
+    if (i >= hiding.size()) hiding.resize(i + 1, kNoSurface);
     if (seen[i]) return;
     if (s.point.x() < lo.x() - reach || s.point.x() > hi.x() + reach ||
         s.point.y() < lo.y() - reach || s.point.y() > hi.y() + reach) {
@@ -106,14 +108,9 @@ void mark_visible_samples(std::span<const Segment> truth, const SegmentIndex& in
         return;
       }
       const Point2 near_sample = s.point + d * (kEndGap_m / dist);
-      if (hidden_by == nullptr) {
-        if (index.blocked(near_sample, pose, s.segment)) continue;
-        seen[i] = 1;
-        return;
-      }
       // The surface that hid the sample last is tried first: it crosses the sight line, so the
       // walk would find a crossing too (it is listed in every cell it touches).
-      std::uint32_t& last = (*hidden_by)[i];
+      std::uint32_t& last = hiding[i];
       if (last != kNoSurface && index.crosses(near_sample, pose, last)) continue;
       const std::size_t blocker = index.first_blocker(near_sample, pose, s.segment);
       if (blocker != SegmentIndex::kNone) {
@@ -143,8 +140,7 @@ std::vector<Point2> visible_truth_samples(std::span<const Segment> truth,
   const SegmentIndex index(truth, options.index_cell_m);
   const std::vector<Point2> poses = subsample_path(true_path, options.trajectory_step_m);
   std::vector<std::uint8_t> seen;
-  std::vector<std::uint32_t> hidden_by;
-  mark_visible_samples(truth, index, poses, options, seen, &hidden_by);
+  mark_visible_samples(truth, index, poses, options, seen);
   return marked_samples(truth, options.sample_step_m, seen);
 }
 

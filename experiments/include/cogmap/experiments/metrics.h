@@ -70,9 +70,10 @@ class SegmentIndex;
 /// The test of visible_truth_samples in pieces: sets `seen[k]` for every sample k (in
 /// sample_segments order) of `truth` that one of `poses` sees (`index` built over `truth`).
 /// Samples already set are not tested again, so the poses can come in batches, in any order;
-/// `seen` grows to the sample count. `hidden_by`, if given, keeps from call to call the surface
-/// that last hid each sample; it is tried first against the next position (a wall's back face is
-/// hidden by its front face from everywhere), which changes only the speed, never the flags.
+/// `seen` grows to the sample count. The surface that last hid each sample is tried first
+/// against the next position (a wall's back face is hidden by its front face from everywhere),
+/// which changes only the speed, never the flags; `hidden_by`, if given, keeps it from call to
+/// call.
 void mark_visible_samples(std::span<const mapper::Segment> truth, const SegmentIndex& index,
                           std::span<const mapper::Point2> poses, const MapMetricsOptions& options,
                           std::vector<std::uint8_t>& seen,
