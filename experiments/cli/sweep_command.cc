@@ -44,6 +44,16 @@ unsigned job_count(unsigned jobs) {
   return jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
 }
 
+// A job per core keeps every core busy already: llvmpipe's own helper threads would only take
+// turns with the runs. Nine-room sweep, figures on, 2 cores, medians of 3: --jobs 2 3.02 ->
+// 2.92 s, --jobs 1 5.34 s either way (docs/performance.md, "Sweeps on two cores"). Called
+// before any thread of the sweep starts.
+void draw_without_rasteriser_threads_if_cores_are_full(unsigned jobs) {
+  if (jobs >= std::max(1u, std::thread::hardware_concurrency())) {
+    render::rasterise_on_drawing_threads_only();
+  }
+}
+
 void plot(const experiments::ResultsTable& table, const fs::path& out, bool enabled,
           unsigned jobs) {
   if (!enabled) return;
@@ -69,6 +79,7 @@ int merge(const SweepArgs& args) {
     mapper::io::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
     std::cout << "cogmap sweep: merged " << tables.size() << " files, " << merged.rows.size()
               << " runs into " << (out / "results.csv").string() << "\n";
+    draw_without_rasteriser_threads_if_cores_are_full(job_count(args.jobs));
     plot(merged, out, !args.no_plots, job_count(args.jobs));
     return kExitOk;
   } catch (const std::exception& e) {
@@ -109,6 +120,7 @@ int sweep(const SweepArgs& args) {
   const auto durability =
       args.fsync ? mapper::io::Durability::kSynced : mapper::io::Durability::kAtomic;
   const bool runs_draw = !no_figures && !planned.empty() && planned.front().experiment.figures;
+  draw_without_rasteriser_threads_if_cores_are_full(options.jobs);
   try {
     // Runs that draw figures need the renderer plugin: fail once, before any run starts.
     if (runs_draw) render::require_renderer();

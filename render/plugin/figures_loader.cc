@@ -54,6 +54,12 @@ const FigureApi& api() {
 
 void require_renderer() { api(); }
 
+bool rasterise_on_drawing_threads_only() {
+  constexpr const char* kThreads = "LP_NUM_THREADS";  // llvmpipe's helper threads (0: none)
+  if (std::getenv(kThreads) != nullptr) return false;
+  return ::setenv(kThreads, "0", /*overwrite=*/0) == 0;
+}
+
 void write_room_stages_figure(const mapper::AsrTrace& trace, const std::string& title,
                               const std::filesystem::path& png, const Style& style) {
   api().room_stages(trace, title, png, style);

@@ -20,4 +20,13 @@ class RendererUnavailable : public std::runtime_error {
 /// bin/, or the build tree's lib/cogmap.
 void require_renderer();
 
+/// Makes the rasteriser (Mesa's llvmpipe) draw on each drawing thread alone instead of starting
+/// helper threads of its own, one per core. For a process whose own threads already keep every
+/// core busy (a sweep running a job per core): the helpers would only take turns with the runs
+/// (docs/performance.md, "Sweeps on two cores"). It sets LP_NUM_THREADS=0, which Mesa reads when
+/// the first figure starts the rasteriser, so call it before the first figure and before the
+/// process starts threads of its own (setenv is not thread-safe). A value the user has set is
+/// kept. Returns whether it set the value.
+bool rasterise_on_drawing_threads_only();
+
 }  // namespace cogmap::render
