@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 #include "cogmap/experiments/segment_index.h"
 
@@ -192,15 +194,56 @@ MapAccuracy evaluate_map(std::span<const Segment> map, const SegmentIndex& truth
   return out;
 }
 
+namespace {
+
+/// The sums a SimilarityFit needs, gathered in one pass over the rows (they are streamed):
+/// with e = p − p₀ and t = p_true − p_true,0 as complex numbers, S = Σ e·conj(t), T = Σ |t|²,
+/// E = Σ |e|²; then a = S / T and Σ |e − a·t|² = E − |S|² / T.
+class SimilaritySums {
+ public:
+  void add(const mapper::Point2& p, const mapper::Point2& p_true) {
+    if (!origin_) origin_ = {p, p_true};
+    const mapper::Point2 e = p - origin_->first, t = p_true - origin_->second;
+    s_re_ += e.x() * t.x() + e.y() * t.y();
+    s_im_ += e.y() * t.x() - e.x() * t.y();
+    t_ += t.squaredNorm();
+    e_ += e.squaredNorm();
+    ++n_;
+  }
+  SimilarityFit fit() const {
+    SimilarityFit f;
+    if (n_ == 0) return f;
+    // A path that never leaves its start (T = 0) has no scale or direction to fit.
+    if (t_ > 0.0) {
+      f.scale = std::hypot(s_re_, s_im_) / t_;
+      f.rotation_deg = std::atan2(s_im_, s_re_) * 180.0 / std::numbers::pi;
+    }
+    const double explained = t_ > 0.0 ? (s_re_ * s_re_ + s_im_ * s_im_) / t_ : 0.0;
+    // E − |S|²/T ≥ 0 (Cauchy-Schwarz); rounding may leave it a hair below.
+    f.residual_rmse_m = std::sqrt(std::max(0.0, e_ - explained) / static_cast<double>(n_));
+    return f;
+  }
+
+ private:
+  std::optional<std::pair<mapper::Point2, mapper::Point2>> origin_;
+  double s_re_ = 0.0, s_im_ = 0.0, t_ = 0.0, e_ = 0.0;
+  std::size_t n_ = 0;
+};
+
+}  // namespace
+
 std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows,
                                                         std::optional<double> closed_heading_rad) {
   LocalizationAccuracy out;
   double sum_odom = 0.0, sum_est = 0.0;
+  SimilaritySums fit_odom, fit_est;
   std::optional<TrajectoryRow> last;  // a copy: a row is valid only until the next one is read
   for (const TrajectoryRow& r : rows) {
     if (!r.truth) continue;
     sum_odom += (r.odometry.translation() - r.truth->translation()).squaredNorm();
     sum_est += (r.estimate.translation() - r.truth->translation()).squaredNorm();
+    fit_odom.add(r.odometry.translation(), r.truth->translation());
+    fit_est.add(r.estimate.translation(), r.truth->translation());
     ++out.frames;
     last = r;
   }
@@ -208,6 +251,8 @@ std::optional<LocalizationAccuracy> evaluate_trajectory(TrajectoryView rows,
   const double n = static_cast<double>(out.frames);
   out.ate_rmse_odometry_m = std::sqrt(sum_odom / n);
   out.ate_rmse_corrected_m = std::sqrt(sum_est / n);
+  out.similarity_odometry = fit_odom.fit();
+  out.similarity_corrected = fit_est.fit();
   constexpr double kDeg = 180.0 / std::numbers::pi;
   out.heading_error_final_odometry_deg =
       std::abs(mapper::wrap_angle_rad(last->odometry.theta_rad - last->truth->theta_rad)) * kDeg;

@@ -260,6 +260,69 @@ TEST(TrajectoryMetrics, AteAndFinalHeading) {
   EXPECT_DOUBLE_EQ(closed->heading_error_final_corrected_deg, m->heading_error_final_corrected_deg);
 }
 
+// A path drawn 1 % too large and turned 2° about its start is all scale and rotation: the fit
+// finds both, and nothing is left over.
+TEST(TrajectoryMetrics, SimilarityFitFindsAScaledTurnedPathExactly) {
+  const double scale = 1.01, turn = 2.0 * std::numbers::pi / 180.0;
+  const Point2 start(3.0, -2.0);
+  const Point2 corners[] = {{0, 0}, {10, 0}, {10, 6}, {0, 6}, {0, 1}};
+  std::vector<TrajectoryRow> rows;
+  for (int leg = 0; leg + 1 < 5; ++leg) {
+    for (int k = 0; k < 10; ++k) {
+      const Point2 off = corners[leg] + (corners[leg + 1] - corners[leg]) * (k / 10.0);
+      const Point2 drawn(scale * (std::cos(turn) * off.x() - std::sin(turn) * off.y()),
+                         scale * (std::sin(turn) * off.x() + std::cos(turn) * off.y()));
+      TrajectoryRow r;
+      r.truth = Pose2{start.x() + off.x(), start.y() + off.y(), 0.0};
+      r.estimate = Pose2{start.x() + drawn.x(), start.y() + drawn.y(), 0.0};
+      r.odometry = *r.truth;  // exact: scale 1, no turn
+      rows.push_back(r);
+    }
+  }
+  const auto m = evaluate_trajectory(rows);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NEAR(m->similarity_corrected.scale, 1.01, 1e-12);
+  EXPECT_NEAR(m->similarity_corrected.rotation_deg, 2.0, 1e-10);
+  EXPECT_NEAR(m->similarity_corrected.residual_rmse_m, 0.0, 1e-6);
+  EXPECT_GT(m->ate_rmse_corrected_m, 0.1);  // the ATE itself is not small
+  EXPECT_DOUBLE_EQ(m->similarity_odometry.scale, 1.0);
+  EXPECT_DOUBLE_EQ(m->similarity_odometry.rotation_deg, 0.0);
+  EXPECT_DOUBLE_EQ(m->similarity_odometry.residual_rmse_m, 0.0);
+}
+
+// An offset no scale or turn about the start explains stays in the residual: frames at ±1 m
+// along x, each drawn 0.1 m to the left, fit a = 1 and leave 0.1 m on two of three frames.
+TEST(TrajectoryMetrics, SimilarityFitLeavesAShiftInTheResidual) {
+  std::vector<TrajectoryRow> rows(3);
+  const double xs[] = {0.0, 1.0, -1.0}, ys[] = {0.0, 0.1, 0.1};
+  for (int i = 0; i < 3; ++i) {
+    rows[i].truth = Pose2{5.0 + xs[i], 7.0, 0.0};
+    rows[i].estimate = Pose2{5.0 + xs[i], 7.0 + ys[i], 0.0};
+    rows[i].odometry = *rows[i].truth;
+  }
+  const auto m = evaluate_trajectory(rows);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NEAR(m->similarity_corrected.scale, 1.0, 1e-12);
+  EXPECT_NEAR(m->similarity_corrected.rotation_deg, 0.0, 1e-12);
+  EXPECT_NEAR(m->similarity_corrected.residual_rmse_m, std::sqrt(0.02 / 3.0), 1e-12);
+}
+
+// A robot that never leaves its start has nothing to scale or turn: the fit is the identity and
+// the residual is the ATE.
+TEST(TrajectoryMetrics, SimilarityFitOfAPathThatNeverMovesIsTheIdentity) {
+  std::vector<TrajectoryRow> rows(4);
+  for (int i = 0; i < 4; ++i) {
+    rows[i].truth = Pose2{1.0, 1.0, 0.0};
+    rows[i].estimate = Pose2{1.0, 1.0 + (i == 0 ? 0.0 : 0.2), 0.0};
+    rows[i].odometry = *rows[i].truth;
+  }
+  const auto m = evaluate_trajectory(rows);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_DOUBLE_EQ(m->similarity_corrected.scale, 1.0);
+  EXPECT_DOUBLE_EQ(m->similarity_corrected.rotation_deg, 0.0);
+  EXPECT_NEAR(m->similarity_corrected.residual_rmse_m, m->ate_rmse_corrected_m, 1e-12);
+}
+
 TEST(TrajectoryMetrics, NoTruthNoMetrics) {
   std::vector<TrajectoryRow> rows(3);
   EXPECT_FALSE(evaluate_trajectory(rows).has_value());

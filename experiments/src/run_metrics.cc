@@ -56,6 +56,11 @@ Json nav_json(const NavMetrics& n) {
   return nav;
 }
 
+Json similarity_json(const SimilarityFit& f) {
+  return {
+      {"scale", f.scale}, {"rotation_deg", f.rotation_deg}, {"residual_rmse_m", f.residual_rmse_m}};
+}
+
 Json stage_json(const StageError& e) {
   return {{"median_m", opt(e.median_m)}, {"p90_m", opt(e.p90_m)}, {"count", e.count}};
 }
@@ -136,6 +141,9 @@ std::string metrics_json_text(const RunMetrics& m) {
                                                       : Json(nullptr)}}},
         {"ate_rmse_m",
          {{"odometry", l.ate_rmse_odometry_m}, {"corrected", l.ate_rmse_corrected_m}}},
+        {"similarity",
+         {{"odometry", similarity_json(l.similarity_odometry)},
+          {"corrected", similarity_json(l.similarity_corrected)}}},
         {"frames", l.frames}};
   }
   if (m.error_breakdown) j["error_breakdown"] = breakdown_json(*m.error_breakdown);

@@ -91,7 +91,8 @@ TEST(RunMetrics, JsonHasTheRequiredKeysAndOmitsTruthMetricsWithoutTruth) {
   EXPECT_NE(without.find("\"real_time_factor\": 20.0"), std::string::npos) << without;
   m.map = MapAccuracy{};
   m.map->wall_error_median_m = 0.04;
-  m.localization = LocalizationAccuracy{6.1, 0.7, 1.9, 0.21, 10, std::nullopt};
+  m.localization =
+      LocalizationAccuracy{6.1, 0.7, 1.9, 0.21, 10, std::nullopt, {}, {1.01, 2.5, 0.3}};
   const std::string with = metrics_json_text(m);
   EXPECT_NE(with.find("\"wall_error_median_m\": 0.04"), std::string::npos);
   EXPECT_NE(with.find("\"wall_coverage\": null"), std::string::npos);
@@ -102,6 +103,12 @@ TEST(RunMetrics, JsonHasTheRequiredKeysAndOmitsTruthMetricsWithoutTruth) {
   m.localization->heading_error_final_closed_deg = 0.5;
   EXPECT_NE(metrics_json_text(m).find("\"corrected\": 0.7,\n      \"closed\": 0.5\n    }"),
             std::string::npos);
+  const auto j = nlohmann::json::parse(with);
+  const auto& similarity = j["localization"]["similarity"];
+  EXPECT_DOUBLE_EQ(similarity["odometry"]["scale"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(similarity["corrected"]["scale"].get<double>(), 1.01);
+  EXPECT_DOUBLE_EQ(similarity["corrected"]["rotation_deg"].get<double>(), 2.5);
+  EXPECT_DOUBLE_EQ(similarity["corrected"]["residual_rmse_m"].get<double>(), 0.3);
 }
 
 TEST(RunMetrics, PerRoomMappingTimeIsInMillisecondsUnderTiming) {

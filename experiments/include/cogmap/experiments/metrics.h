@@ -112,6 +112,17 @@ MapAccuracy evaluate_map(std::span<const mapper::Segment> map, const SegmentInde
 /// `values` is reordered. Requires a non-empty input.
 double quantile(std::vector<double>& values, double q);
 
+/// How much of a trajectory's error one scale and one rotation about its start explain: the
+/// least-squares a = s·e^{iφ} (complex plane) with p − p₀ ≈ a·(p_true − p_true,0) over the frames
+/// with ground truth, anchored at the first of them. A heading-only correction (EM) cannot see a
+/// distance scale error of the odometry, nor a heading error made before the first correction;
+/// this says how much of the ATE they are (docs/metrics.md).
+struct SimilarityFit {
+  double scale = 1.0;            ///< s: 1.01 draws the path 1 % too large
+  double rotation_deg = 0.0;     ///< φ, counter-clockwise
+  double residual_rmse_m = 0.0;  ///< sqrt(mean |(p − p₀) − a·(p_true − p_true,0)|²)
+};
+
 /// The localization block of metrics.json.
 struct LocalizationAccuracy {
   double heading_error_final_odometry_deg = 0.0;  ///< |wrap(θ_odom − θ_true)| at the last frame
@@ -122,6 +133,8 @@ struct LocalizationAccuracy {
   /// heading_error_final_corrected_deg for the estimate once the run's last room is closed (its
   /// EM correction applied, Mapper::finish), when given to evaluate_trajectory.
   std::optional<double> heading_error_final_closed_deg;
+  SimilarityFit similarity_odometry;   ///< the odometry path's fit to the true one
+  SimilarityFit similarity_corrected;  ///< the estimate's
 };
 
 /// Empty when no row has ground truth. Rows without truth are skipped; the final heading
