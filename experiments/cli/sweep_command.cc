@@ -45,9 +45,9 @@ unsigned job_count(unsigned jobs) {
 }
 
 // A job per core keeps every core busy already: llvmpipe's own helper threads would only take
-// turns with the runs. Nine-room sweep, figures on, 2 cores, medians of 3: --jobs 2 3.02 ->
-// 2.92 s, --jobs 1 5.34 s either way (docs/performance.md, "Sweeps on two cores"). Called
-// before any thread of the sweep starts.
+// turns with the runs. Nine-room sweep, figures on, 2 cores, medians of 3: --jobs 2 3.14 ->
+// 2.89 s, --jobs 1 5.33 / 5.39 s (docs/performance.md, "Sweeps on two cores"). Called before
+// any thread of the sweep starts.
 void draw_without_rasteriser_threads_if_cores_are_full(unsigned jobs) {
   if (jobs >= std::max(1u, std::thread::hardware_concurrency())) {
     render::rasterise_on_drawing_threads_only();
