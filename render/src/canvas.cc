@@ -277,7 +277,6 @@ Image Canvas::finish() {
   // RGBA bytes are an Rgba8's, but blending left alpha below 255 where lines were drawn: rows
   // are copied whole, then made opaque (both passes vectorise; a pixel-by-pixel copy was 9 %
   // of a run with figures).
-  static_assert(sizeof(Rgba8) == 4, "Rgba8 must be the buffer's 4 bytes");
   const std::size_t row_bytes = static_cast<std::size_t>(width_) * 4;
   auto* pixels = reinterpret_cast<std::uint8_t*>(image.pixels().data());
   for (int y = 0; y < height_; ++y) {

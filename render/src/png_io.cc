@@ -103,7 +103,6 @@ void write_png(const Image& image, const std::filesystem::path& png) {
 
   // The file carries no alpha: figures are opaque, and RGB is a quarter smaller. libpng drops
   // the alpha byte of each pixel as it writes the rows (png_set_filler).
-  static_assert(sizeof(Rgba8) == 4, "Rgba8 must be 4 packed bytes for libpng");
   const auto* rgba = reinterpret_cast<const std::uint8_t*>(image.pixels().data());
   const std::filesystem::path temp = temp_path_for(png);
   std::FILE* file = std::fopen(temp.c_str(), "wb");
@@ -141,7 +140,6 @@ Image read_png(const std::filesystem::path& png) {
   }
   info.format = PNG_FORMAT_RGBA;
   Image image(static_cast<int>(info.width), static_cast<int>(info.height));
-  static_assert(sizeof(Rgba8) == 4, "Rgba8 must be tightly packed for libpng");
   if (!png_image_finish_read(&info, nullptr, image.pixels().data(), 0, nullptr)) {
     const std::string message = info.message;
     png_image_free(&info);

@@ -16,6 +16,8 @@ struct Rgba8 {
   /// Channel-wise equality.
   bool operator==(const Rgba8&) const = default;
 };
+// An Image's pixels are read and written as packed RGBA bytes (OSMesa's buffer, libpng's rows).
+static_assert(sizeof(Rgba8) == 4, "Rgba8 must be 4 packed bytes");
 
 /// A width x height RGBA image; row 0 is the top row.
 class Image {
