@@ -4,18 +4,17 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
+
+#include "sonar_fan_surfaces.h"
 
 namespace cogmap::sim::sonar_detail {
 namespace {
 
 using mapper::Point2;
 
-// Rays start this far beyond their origin so a bounce never re-hits the surface it leaves.
-constexpr double kMinT = 1e-9;
 // Line-of-sight slack: a target counts as visible if nothing blocks it this much nearer.
 constexpr double kSightSlackM = 1e-6;
-
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // True when nothing in the scene (but `skip_surface`) is hit before `dist_m - slack` on the way
 // from `from` in unit direction `dir`.
@@ -28,28 +27,6 @@ bool clear_line(const SonarScene& scene, const Point2& from, const Point2& dir, 
 
 }  // namespace
 
-namespace {
-
-// One surface's test, shared by every scan so all run the very same floating-point operations.
-// Equally distant surfaces: the higher index wins, whatever order they are tested in. Only the
-// distance and the surface are kept; the hit point and normal are computed once at the end
-// (finish_hit), from the same operands, so they are the very same doubles.
-inline void test_surface(const SonarScene& scene, int i, const Point2& origin, const Point2& dir,
-                         double& best_t, int& best_i) {
-  const mapper::Segment& s = scene.surfaces[static_cast<std::size_t>(i)];
-  const Point2 e = s.b - s.a;
-  const double denom = cross(dir, e);
-  if (std::abs(denom) < 1e-15) return;  // parallel: a grazing ray never echoes anyway
-  const Point2 ao = s.a - origin;
-  const double t = cross(ao, e) / denom;
-  if (t <= kMinT || t > best_t) return;  // u is not needed (the test below is an OR)
-  const double u = cross(ao, dir) / denom;
-  if (u < 0.0 || u > 1.0) return;
-  if (best_i >= 0 && t == best_t && i < best_i) return;
-  best_t = t;
-  best_i = i;
-}
-
 std::optional<RayHit> finish_hit(const SonarScene& scene, const Point2& origin, const Point2& dir,
                                  double best_t, int best_i) {
   if (best_i < 0) return std::nullopt;
@@ -58,8 +35,6 @@ std::optional<RayHit> finish_hit(const SonarScene& scene, const Point2& origin, 
   const double len = e.norm();
   return RayHit{best_t, best_i, origin + best_t * dir, Point2(-e.y() / len, e.x() / len)};
 }
-
-}  // namespace
 
 std::optional<RayHit> first_hit(const SonarScene& scene, const Point2& origin, const Point2& dir,
                                 double max_t_m, int skip_surface, const SceneIndex* index) {
@@ -200,13 +175,21 @@ double direct_candidates(const SonarScene& scene, const Cone& cone,
       table.beam.push_back(f.gain * beam_pattern(offset, f.sigma_rad));
     }
   }
+  // With an index, what the whole fan can meet is gathered once, nearest first (a finite cone
+  // only: the cell walk clamps anything else to the grid's border).
+  thread_local FanSurfaces fan;
+  const bool by_fan = index != nullptr && std::isfinite(cone.origin.x()) &&
+                      std::isfinite(cone.origin.y()) && std::isfinite(cone.axis_rad) &&
+                      std::isfinite(cone.max_range_m);
+  if (by_fan) fan.gather(*index, cone.origin, cone.axis_rad, f.fan_rad, cone.max_range_m);
   double certain_m = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
     const double offset = table.offset[static_cast<std::size_t>(i)];
     const double angle = cone.axis_rad + offset;
     Ray ray{Point2(std::cos(angle), std::sin(angle)), offset,
             table.beam[static_cast<std::size_t>(i)], std::nullopt};
-    ray.hit = first_hit(scene, cone.origin, ray.d, cone.max_range_m, -1, index);
+    ray.hit = by_fan ? fan.first_hit(ray.d, cone.max_range_m)
+                     : first_hit(scene, cone.origin, ray.d, cone.max_range_m, -1, index);
     if (ray.hit) {
       const SonarMaterial& m1 = scene.material_of(ray.hit->surface);
       const double strength = ray.beam * surface_strength(m1, std::abs(ray.d.dot(ray.hit->normal)),
@@ -219,7 +202,28 @@ double direct_candidates(const SonarScene& scene, const Cone& cone,
   // Convex corners and edges diffract the pulse in every direction (none beyond a certain
   // echo can be heard first, so their line of sight is not tested).
   const double cos_fan = std::cos(f.fan_rad);
-  for (const Point2& c : scene.corners) {
+  // clear_line, through the fan's list when there is one.
+  const auto in_sight = [&](const Point2& dir, double dist) {
+    if (!by_fan)
+      return clear_line(scene, cone.origin, dir, dist, options.corner_radius_m, -1, index);
+    const double reach = dist - options.corner_radius_m;
+    return reach <= kMinT || !fan.blocked(dir, reach);
+  };
+  // The corners in the fan's box, in the scene's order (any other corner is out of the fan or
+  // out of range, and skipped below).
+  thread_local std::vector<int> all_corners;
+  std::span<const int> corner_ids;
+  if (by_fan) {
+    corner_ids = fan.corners();
+  } else {
+    if (all_corners.size() != scene.corners.size()) {
+      all_corners.resize(scene.corners.size());
+      for (std::size_t k = 0; k < all_corners.size(); ++k) all_corners[k] = static_cast<int>(k);
+    }
+    corner_ids = all_corners;
+  }
+  for (const int id : corner_ids) {
+    const Point2& c = scene.corners[static_cast<std::size_t>(id)];
     // A corner more than `reach` away along x or y is further than max range or a certain echo:
     // its norm is at least |dx| (1 - 4 eps) > bound, so the exact test below would skip it too.
     const double bound = std::min(cone.max_range_m, certain_m);
@@ -234,7 +238,7 @@ double direct_candidates(const SonarScene& scene, const Cone& cone,
     if (f.axis.dot(dir) < cos_fan - 1e-12) continue;  // outside the fan: skip the atan2
     const double offset = f.offset_of(dir);
     if (std::abs(offset) > f.fan_rad) continue;
-    if (!clear_line(scene, cone.origin, dir, dist, options.corner_radius_m, -1, index)) continue;
+    if (!in_sight(dir, dist)) continue;
     const double strength = f.gain * options.corner_strength * beam_pattern(offset, f.sigma_rad);
     out.push_back({dist, strength, false});
     if (strength >= kCertainStrength) certain_m = std::min(certain_m, dist);

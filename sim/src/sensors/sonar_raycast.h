@@ -8,6 +8,7 @@
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/sim/sonar_model.h"
 #include "sonar_scene_index.h"
+#include "sonar_surface_test.h"
 
 namespace cogmap::sim::sonar_detail {
 
@@ -26,6 +27,11 @@ struct RayHit {
 std::optional<RayHit> first_hit(const SonarScene& scene, const mapper::Point2& origin,
                                 const mapper::Point2& dir, double max_t_m, int skip_surface = -1,
                                 const SceneIndex* index = nullptr);
+
+/// The hit kept by test_surface (`best_i` < 0: none), with its point and the surface's unit
+/// normal, computed from the same operands whichever scan found it.
+std::optional<RayHit> finish_hit(const SonarScene& scene, const mapper::Point2& origin,
+                                 const mapper::Point2& dir, double best_t, int best_i);
 
 /// The mirror image of `dir` about a surface with unit `normal`.
 mapper::Point2 reflect(const mapper::Point2& dir, const mapper::Point2& normal);

@@ -41,6 +41,17 @@ class SceneIndex {
   void walk_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
                 Test&& test) const;
 
+  /// Surface indices of every surface listed in a cell the box [lo, hi] touches (a superset of
+  /// the surfaces passing through the box), each once, in no particular order. `out` is cleared
+  /// first. Not thread-safe (query scratch).
+  void surfaces_in_box(const mapper::Point2& lo, const mapper::Point2& hi,
+                       std::vector<int>& out) const;
+
+  /// Corner indices of every corner listed in a cell the box [lo, hi] touches (a superset of
+  /// the corners inside it), each once, ascending. `out` is cleared first.
+  void corners_in_box(const mapper::Point2& lo, const mapper::Point2& hi,
+                      std::vector<int>& out) const;
+
   /// True when a corner lies within `radius_m` of `p` (the same test, `norm() <= radius_m`, as a
   /// scan over every corner).
   bool corner_within(const mapper::Point2& p, double radius_m) const;
