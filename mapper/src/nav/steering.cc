@@ -15,10 +15,33 @@ double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
 double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
                    double half_angle_rad, double length_m) {
   double nearest = std::numeric_limits<double>::infinity();
+  // Most points lie clearly inside or outside the cone: their offset along and across the
+  // heading decides without the bearing's atan2, against the cone's edge moved in or out by a
+  // margin far above the rounding of either test (1e-16 rad, more for a heading wound up to
+  // large values). Only points within the margin of the edge take the bearing below.
+  const double margin_rad = 1e-9 * (1.0 + std::abs(heading_rad));
+  const double inner_rad = half_angle_rad - margin_rad, outer_rad = half_angle_rad + margin_rad;
+  const bool by_offsets = inner_rad > 0.0 && outer_rad < 0.5 * std::numbers::pi;
+  const Point2 ahead(std::cos(heading_rad), std::sin(heading_rad));
+  const double tan_inner = by_offsets ? std::tan(inner_rad) : 0.0;
+  const double tan_outer = by_offsets ? std::tan(outer_rad) : 0.0;
   for (const ObstaclePoint& o : obstacles) {
     // A point no nearer than the nearest so far cannot change it: skip its bearing's atan2.
     const double distance = o.offset_m.norm() - 0.5 * length_m;
     if (!(distance < nearest)) continue;
+    if (by_offsets) {
+      const double along = ahead.dot(o.offset_m);
+      const double across = std::abs(ahead.x() * o.offset_m.y() - ahead.y() * o.offset_m.x());
+      if (along > 0.0) {
+        if (across < along * tan_inner) {
+          nearest = distance;
+          continue;
+        }
+        if (across > along * tan_outer) continue;
+      } else if (along < 0.0 || across > 0.0) {
+        continue;  // 90° or more off the heading, and the cone is narrower
+      }
+    }
     const double bearing = std::atan2(o.offset_m.y(), o.offset_m.x());
     if (std::abs(wrap_angle_rad(bearing - heading_rad)) > half_angle_rad) continue;
     nearest = distance;
