@@ -20,6 +20,11 @@ Vfh::Vfh(const VfhOptions& options) : options_(options) {
   density_.assign(count, 0.0);
   smoothed_.assign(count, 0.0);
   blocked_.assign(count, 0);
+  for (int k = 0; k < count; ++k) {
+    const double border = (k - 0.5) * sector_rad_;
+    borders_.emplace_back(std::cos(border), std::sin(border));
+  }
+  borders_.push_back(borders_.front());  // the last sector's upper border
   // Automatic τ_high: a cell of full certainty (15) blocks its sectors once within
   // block_range_m (1.5 m: 2.4 s at 0.5 m/s to steer around it); a lone echo or a barely
   // occupied cell (certainty 8) never blocks on its own, so one spurious sonar reading cannot
@@ -51,6 +56,36 @@ int Vfh::sector_of(double angle_rad) const {
   return wrap(static_cast<int>(std::floor(a / sector_rad_)));
 }
 
+int Vfh::sector_of_direction(const Point2& v) const {
+  // A rough bearing (within 0.004 rad) names the sector or a neighbour; the cross products
+  // with its borders then decide, with a margin of 1e-9 rad far above the rounding of the
+  // direction and of sector_of's own arithmetic (~1e-15 rad).
+  constexpr double kMargin = 1e-9;
+  const double ax = std::abs(v.x()), ay = std::abs(v.y());
+  const double big = std::max(ax, ay);
+  if (!(big > 0.0)) return -1;
+  const double q = std::min(ax, ay) / big;
+  double rough = q * (0.25 * kPi + 0.273 * (1.0 - q));  // atan(q), q in [0, 1]
+  if (ay > ax) rough = 0.5 * kPi - rough;
+  if (v.x() < 0.0) rough = kPi - rough;
+  if (v.y() < 0.0) rough = 2.0 * kPi - rough;  // [0, 2π]
+  const int n = sector_count();
+  int k = static_cast<int>(rough / sector_rad_ + 0.5);  // rough ≥ 0: truncation rounds
+  if (k >= n) k -= n;
+  const auto above = [&](const Point2& border) {  // v turned anticlockwise from the border
+    return border.x() * v.y() - border.y() * v.x();
+  };
+  const std::size_t i = static_cast<std::size_t>(k);
+  const double over_lower = above(borders_[i]), under_upper = -above(borders_[i + 1]);
+  if (over_lower > kMargin && under_upper > kMargin) return k;
+  // The neighbour on the side the direction lies beyond (borders_ has one entry past the last
+  // sector, a copy of the first, so k + 1 needs no wrap).
+  const int other = over_lower <= kMargin ? (k == 0 ? n - 1 : k - 1) : (k + 1 == n ? 0 : k + 1);
+  const std::size_t j = static_cast<std::size_t>(other);
+  if (above(borders_[j]) > kMargin && -above(borders_[j + 1]) > kMargin) return other;
+  return -1;
+}
+
 double Vfh::sector_center_rad(int sector) const {
   return wrap_angle_rad(wrap(sector) * sector_rad_);
 }
@@ -67,15 +102,31 @@ void Vfh::build(const std::vector<ObstaclePoint>& obstacles, double range_m) {
     const double d = o.offset_m.norm();
     const double kappa = kappa_at(d);
     if (kappa <= 0.0 || d <= 0.0 || d > range_m) continue;
-    const double beta = std::atan2(o.offset_m.y(), o.offset_m.x());  // Eq. 2.15
     const double c = o.certainty;
     const double m = c * c * kappa;  // Eq. 2.16 with κ(d) scaled by closeness
     // Enlargement: the obstacle blocks every direction whose line passes within r of it.
     // Inside r the whole half plane toward it is blocked.
     const double r = options_.safety_radius_m;
-    const double gamma = d > r ? std::asin(r / d) : 0.5 * kPi;
-    const int lo = sector_of(beta - gamma);
-    const int span = wrap(sector_of(beta + gamma) - lo);
+    // The sectors of the enlarged directions β ∓ γ (Eq. 2.15, γ = asin(r/d)): found from the
+    // direction turned by ∓γ, without atan2 or asin, unless a direction lies at a sector's
+    // border or γ is steep (d within 0.1 % of r); then from the angles, as always.
+    int lo = -1, hi = -1;
+    const double sin_gamma = d > r ? r / d : 1.0;
+    if (sin_gamma <= 0.999 || !(d > r)) {
+      const double cos_gamma = d > r ? std::sqrt(1.0 - sin_gamma * sin_gamma) : 0.0;
+      const Point2 u = o.offset_m / d;
+      lo = sector_of_direction(
+          Point2(cos_gamma * u.x() + sin_gamma * u.y(), cos_gamma * u.y() - sin_gamma * u.x()));
+      hi = sector_of_direction(
+          Point2(cos_gamma * u.x() - sin_gamma * u.y(), cos_gamma * u.y() + sin_gamma * u.x()));
+    }
+    if (lo < 0 || hi < 0) {
+      const double beta = std::atan2(o.offset_m.y(), o.offset_m.x());  // Eq. 2.15
+      const double gamma = d > r ? std::asin(r / d) : 0.5 * kPi;
+      lo = sector_of(beta - gamma);
+      hi = sector_of(beta + gamma);
+    }
+    const int span = wrap(hi - lo);
     // Eq. 2.17 over sectors lo .. lo + span (lo is in [0, n)), stepping round without a division.
     for (int i = 0, k = lo; i <= span; ++i) {
       density_[k] += m;

@@ -76,6 +76,10 @@ class Vfh {
 
  private:
   int wrap(int sector) const;
+  /// The sector holding unit direction `v`, found from the sectors' borders by cross products
+  /// (no trigonometry); -1 when `v` lies within a rounding margin of a border, where only
+  /// sector_of decides exactly as it does for the angle.
+  int sector_of_direction(const Point2& v) const;
 
   VfhOptions options_;
   double sector_rad_;
@@ -83,6 +87,8 @@ class Vfh {
   std::vector<double> density_;
   std::vector<double> smoothed_;
   std::vector<std::uint8_t> blocked_;
+  // Unit vector of each sector's lower border, (k - ½)·sector, and the first one again.
+  std::vector<Point2> borders_;
 };
 
 }  // namespace cogmap::mapper::nav
