@@ -122,8 +122,12 @@ namespace {
 
 // What every ray of one ping shares.
 struct Fan {
-  double sigma_rad, fan_rad, gain, g_exp, dphi;
+  double sigma_rad, fan_rad, cos_fan, gain, g_exp, dphi;
   Point2 axis;
+  /// False only for a direction surely outside the fan (its cosine with the axis below the
+  /// edge's by far more than rounding): offset_of would put it beyond fan_rad too, without the
+  /// atan2.
+  bool may_be_inside(const Point2& dir) const { return axis.dot(dir) >= cos_fan - 1e-12; }
   double offset_of(const Point2& dir) const { return std::atan2(cross(axis, dir), axis.dot(dir)); }
 };
 
@@ -131,6 +135,7 @@ Fan fan_of(const Cone& cone, const SonarModelOptions& options) {
   Fan f;
   f.sigma_rad = options.beam_sigma_deg * std::numbers::pi / 180.0;
   f.fan_rad = options.fan_half_width_deg * std::numbers::pi / 180.0;
+  f.cos_fan = std::cos(f.fan_rad);
   f.gain = std::pow(10.0, options.detection_gain_db / 10.0);
   f.g_exp = options.diffuse_range_gain_exponent;
   const int n = options.rays_per_cone;
@@ -201,7 +206,6 @@ double direct_candidates(const SonarScene& scene, const Cone& cone,
   }
   // Convex corners and edges diffract the pulse in every direction (none beyond a certain
   // echo can be heard first, so their line of sight is not tested).
-  const double cos_fan = std::cos(f.fan_rad);
   // clear_line, through the fan's list when there is one.
   const auto in_sight = [&](const Point2& dir, double dist) {
     if (!by_fan)
@@ -235,7 +239,7 @@ double direct_candidates(const SonarScene& scene, const Cone& cone,
     const double dist = (c - cone.origin).norm();
     if (dist <= kMinT || dist > cone.max_range_m || dist > certain_m) continue;
     const Point2 dir = (c - cone.origin) / dist;
-    if (f.axis.dot(dir) < cos_fan - 1e-12) continue;  // outside the fan: skip the atan2
+    if (!f.may_be_inside(dir)) continue;  // outside the fan: skip the atan2
     const double offset = f.offset_of(dir);
     if (std::abs(offset) > f.fan_rad) continue;
     if (!in_sight(dir, dist)) continue;
@@ -295,6 +299,7 @@ void bounce_candidates(const SonarScene& scene, const Cone& cone, const SceneInd
   const Point2 back_dir = back / t3;
   const double retro_range = 0.5 * (h1->t_m + h2->t_m + t3);
   if (retro_range > latest_m) return;
+  if (!f.may_be_inside(-back_dir)) return;  // arriving from outside the fan: skip the atan2
   const double arrival_offset = f.offset_of(-back_dir);
   if (std::abs(arrival_offset) > f.fan_rad) return;
   const double mismatch = std::acos(std::clamp(d3.dot(back_dir), -1.0, 1.0));
