@@ -122,46 +122,26 @@ void SceneIndex::surfaces_near_ray(const Point2& origin, const Point2& dir, doub
   next_query();
   const Point2 end = origin + max_t_m * dir;
   for_cells_of_segment(origin, end, [&](int cell) {
-    for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
-      const int id = surface_ids_[k];
-      std::uint32_t& seen = stamp_[static_cast<std::size_t>(id)];
-      if (seen == query_) continue;
-      seen = query_;
-      out.push_back(id);
-    }
+    for_new_surfaces_of_cell(cell, [&](int id) { out.push_back(id); });
   });
 }
 
 void SceneIndex::surfaces_in_box(const Point2& lo, const Point2& hi, std::vector<int>& out) const {
   out.clear();
   next_query();
-  const int r0 = row_of(lo.y() - kPadM), r1 = row_of(hi.y() + kPadM);
-  const int c0 = column_of(lo.x() - kPadM), c1 = column_of(hi.x() + kPadM);
-  for (int r = r0; r <= r1; ++r) {
-    for (int c = c0; c <= c1; ++c) {
-      const int cell = r * nx_ + c;
-      for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
-        const int id = surface_ids_[k];
-        std::uint32_t& seen = stamp_[static_cast<std::size_t>(id)];
-        if (seen == query_) continue;
-        seen = query_;
-        out.push_back(id);
-      }
-    }
-  }
+  const Point2 pad(kPadM, kPadM);
+  for_cells_of_box(lo - pad, hi + pad, [&](int cell) {
+    for_new_surfaces_of_cell(cell, [&](int id) { out.push_back(id); });
+  });
 }
 
 void SceneIndex::corners_in_box(const Point2& lo, const Point2& hi, std::vector<int>& out) const {
   out.clear();
-  const int r0 = row_of(lo.y() - kPadM), r1 = row_of(hi.y() + kPadM);
-  const int c0 = column_of(lo.x() - kPadM), c1 = column_of(hi.x() + kPadM);
-  for (int r = r0; r <= r1; ++r) {
-    for (int c = c0; c <= c1; ++c) {
-      const int cell = r * nx_ + c;
-      out.insert(out.end(), corner_ids_.begin() + corner_start_[cell],
-                 corner_ids_.begin() + corner_start_[cell + 1]);
-    }
-  }
+  const Point2 pad(kPadM, kPadM);
+  for_cells_of_box(lo - pad, hi + pad, [&](int cell) {
+    out.insert(out.end(), corner_ids_.begin() + corner_start_[cell],
+               corner_ids_.begin() + corner_start_[cell + 1]);
+  });
   // A corner within the padding of a cell border is listed in each cell it touches.
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -63,6 +63,12 @@ class SceneIndex {
   /// Calls `visit(cell)` for every cell that the segment a-b, widened by the padding, touches.
   template <class Visit>
   void for_cells_of_segment(const mapper::Point2& a, const mapper::Point2& b, Visit&& visit) const;
+  /// Calls `visit(cell)` for every cell the box [lo, hi] touches.
+  template <class Visit>
+  void for_cells_of_box(const mapper::Point2& lo, const mapper::Point2& hi, Visit&& visit) const;
+  /// Calls `visit(id)` for each surface listed in `cell` that the current query has not met.
+  template <class Visit>
+  void for_new_surfaces_of_cell(int cell, Visit&& visit) const;
   int column_of(double x) const;
   int row_of(double y) const;
   /// Starts a query: afterwards no surface counts as taken (stamp_ != query_).
@@ -96,6 +102,27 @@ inline int SceneIndex::row_of(double y) const {
   if (!(v >= 0.0)) return 0;
   if (v >= static_cast<double>(ny_ - 1)) return ny_ - 1;
   return static_cast<int>(v);
+}
+
+template <class Visit>
+void SceneIndex::for_cells_of_box(const mapper::Point2& lo, const mapper::Point2& hi,
+                                  Visit&& visit) const {
+  const int r0 = row_of(lo.y()), r1 = row_of(hi.y());
+  const int c0 = column_of(lo.x()), c1 = column_of(hi.x());
+  for (int r = r0; r <= r1; ++r) {
+    for (int c = c0; c <= c1; ++c) visit(r * nx_ + c);
+  }
+}
+
+template <class Visit>
+void SceneIndex::for_new_surfaces_of_cell(int cell, Visit&& visit) const {
+  for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
+    const int id = surface_ids_[k];
+    std::uint32_t& seen = stamp_[static_cast<std::size_t>(id)];
+    if (seen == query_) continue;
+    seen = query_;
+    visit(id);
+  }
 }
 
 inline void SceneIndex::next_query() const {
@@ -154,14 +181,7 @@ void SceneIndex::walk_ray(const mapper::Point2& origin, const mapper::Point2& di
   };
   double t_c = exit_c(c), t_r = exit_r(r);
   for (;;) {
-    const int cell = r * nx_ + c;
-    for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
-      const int id = surface_ids_[k];
-      std::uint32_t& seen = stamp_[static_cast<std::size_t>(id)];
-      if (seen == query_) continue;
-      seen = query_;
-      nearest_m = test(id);
-    }
+    for_new_surfaces_of_cell(r * nx_ + c, [&](int id) { nearest_m = test(id); });
     const double t_leave = std::min(t_c, t_r);
     if (t_leave >= t_out) return;  // the ray ends in this cell
     // A hit at t lies in the cell the walk is in at t, and its surface is listed in every cell
