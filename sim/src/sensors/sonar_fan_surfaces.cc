@@ -31,12 +31,11 @@ double FanSurfaces::tangent_of(const Point2& dir) const {
   return x > kAheadRatio ? cross(axis_, dir) / x : std::numeric_limits<double>::quiet_NaN();
 }
 
-void FanSurfaces::gather(const SceneIndex& index, const Point2& origin, double axis_rad,
-                         double half_width_rad, double reach_m) {
+void FanSurfaces::gather(const SceneIndex& index, const Point2& origin, const Point2& axis,
+                         double cos_half, double sin_half, double reach_m) {
   scene_ = &index.scene();
   origin_ = origin;
-  axis_ = Point2(std::cos(axis_rad), std::sin(axis_rad));
-  const double cos_half = std::cos(half_width_rad), sin_half = std::sin(half_width_rad);
+  axis_ = axis;
   // The fan's bounding box: the origin, both edges' far ends, and the far point of every
   // compass direction inside the fan (where the arc bulges furthest along x or y).
   Point2 lo = origin, hi = origin;

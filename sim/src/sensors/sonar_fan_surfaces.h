@@ -22,11 +22,12 @@ namespace cogmap::sim::sonar_detail {
 
 class FanSurfaces {
  public:
-  /// Gathers what rays from `origin` within `half_width_rad` of `axis_rad`, no longer than
-  /// `reach_m`, can meet: every surface and corner the index lists in the cells of the fan's
-  /// bounding box. The cone must be finite (the caller walks the cells otherwise).
-  void gather(const SceneIndex& index, const mapper::Point2& origin, double axis_rad,
-              double half_width_rad, double reach_m);
+  /// Gathers what rays from `origin` within the half width (its cosine and sine) of the unit
+  /// `axis`, no longer than `reach_m`, can meet: every surface and corner the index lists in the
+  /// cells of the fan's bounding box. The cone must be finite (the caller walks the cells
+  /// otherwise). The caller's ping has the axis and the half width's cosine and sine already.
+  void gather(const SceneIndex& index, const mapper::Point2& origin, const mapper::Point2& axis,
+              double cos_half, double sin_half, double reach_m);
 
   /// first_hit(scene, origin, dir, max_t_m) for a ray of the fan (`dir` unit and within the
   /// fan's half width of its axis, max_t_m no more than the reach gathered for).

@@ -66,7 +66,7 @@ void expect_fan_matches_full_scan(const SonarScene& scene, std::uint64_t seed, i
     const double axis = k % 4 == 0 ? (k / 4 % 4) * 0.5 * std::numbers::pi : angle(rng);
     const double half = widths_deg[k % 4] * std::numbers::pi / 180.0;
     const double reach = reaches_m[k % 3];
-    fan.gather(index, origin, axis, half, reach);
+    fan.gather(index, origin, unit(axis), std::cos(half), std::sin(half), reach);
     std::vector<Point2> dirs = {unit(axis - half), unit(axis + half), unit(axis)};
     for (int i = 0; i < 17; ++i) dirs.push_back(unit(axis - half + 2.0 * half * i / 16));
     const Point2 ax = unit(axis);
@@ -137,7 +137,8 @@ TEST(SonarFanSurfaces, OnlySurfacesAheadWithinTheFanAreTested) {
                     {Point2(1.0, 0.0), Point2(1.5, 0.0)}};    // 3: on the axis, edge-on
   const SceneIndex index(scene, 0.5);
   FanSurfaces fan;
-  fan.gather(index, Point2(0.0, 0.0), 0.0, 20.0 * std::numbers::pi / 180.0, 5.0);
+  const double half = 20.0 * std::numbers::pi / 180.0;
+  fan.gather(index, Point2(0.0, 0.0), unit(0.0), std::cos(half), std::sin(half), 5.0);
   const auto hit = fan.first_hit(unit(0.1), 5.0);
   ASSERT_TRUE(hit.has_value());
   EXPECT_EQ(hit->surface, 0);

@@ -122,7 +122,7 @@ namespace {
 
 // What every ray of one ping shares.
 struct Fan {
-  double sigma_rad, fan_rad, cos_fan, gain, g_exp, dphi;
+  double sigma_rad, fan_rad, cos_fan, sin_fan, gain, g_exp, dphi;
   Point2 axis;
   /// False only for a direction surely outside the fan (its cosine with the axis below the
   /// edge's by far more than rounding): offset_of would put it beyond fan_rad too, without the
@@ -136,6 +136,7 @@ Fan fan_of(const Cone& cone, const SonarModelOptions& options) {
   f.sigma_rad = options.beam_sigma_deg * std::numbers::pi / 180.0;
   f.fan_rad = options.fan_half_width_deg * std::numbers::pi / 180.0;
   f.cos_fan = std::cos(f.fan_rad);
+  f.sin_fan = std::sin(f.fan_rad);
   f.gain = std::pow(10.0, options.detection_gain_db / 10.0);
   f.g_exp = options.diffuse_range_gain_exponent;
   const int n = options.rays_per_cone;
@@ -186,7 +187,7 @@ double direct_candidates(const SonarScene& scene, const Cone& cone,
   const bool by_fan = index != nullptr && std::isfinite(cone.origin.x()) &&
                       std::isfinite(cone.origin.y()) && std::isfinite(cone.axis_rad) &&
                       std::isfinite(cone.max_range_m);
-  if (by_fan) fan.gather(*index, cone.origin, cone.axis_rad, f.fan_rad, cone.max_range_m);
+  if (by_fan) fan.gather(*index, cone.origin, f.axis, f.cos_fan, f.sin_fan, cone.max_range_m);
   double certain_m = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
     const double offset = table.offset[static_cast<std::size_t>(i)];
