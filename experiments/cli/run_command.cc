@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/number_format.h"
@@ -28,6 +29,7 @@ struct RunArgs {
   bool no_figures = false;
   bool force = false;
   bool fsync = false;
+  int threads = 0;  // 0: two when the machine has two cores or more
 };
 
 std::string opt_text(const std::optional<double>& v) { return v ? format_double(*v) : "n/a"; }
@@ -110,6 +112,10 @@ int run(const RunArgs& args) {
   // rerun does not (docs/performance.md "Durability"), unless asked for.
   options.durability =
       args.fsync ? mapper::io::Durability::kSynced : mapper::io::Durability::kAtomic;
+  // A helper thread traces half of each frame's sonar pings (bit-identical outputs): the
+  // frame loop's one big piece of parallel work (docs/performance.md "Pings on two threads").
+  options.sonar_threads =
+      args.threads > 0 ? args.threads : (std::thread::hardware_concurrency() >= 2 ? 2 : 1);
   experiments::ProgressBar bar(experiments::ProgressBar::stderr_is_terminal());
   options.on_progress = [&bar](double t_s, double duration_s) {
     bar.update(t_s / duration_s, "t = " + std::to_string(static_cast<long>(t_s)) + " s");
@@ -157,6 +163,10 @@ const CommandRegistrar kRegistrar{
       sub->add_flag("--force", args->force, "replace a finished run in --out");
       sub->add_flag("--fsync", args->fsync,
                     "fsync every room and result file as it is written (survives a power cut)");
+      sub->add_option("--threads", args->threads,
+                      "threads tracing the simulated sonar: 1 or 2 (default 2 on two cores or "
+                      "more; outputs are the same)")
+          ->check(CLI::Range(1, 2));
       sub->callback([&exit_code, args] { exit_code = run(*args); });
     }};
 

@@ -52,6 +52,7 @@ RunSummary run_experiment(const Experiment& experiment, const RunOptions& option
   std::unique_ptr<sim::SimRobot> robot;
   try {
     robot = std::make_unique<sim::SimRobot>(world, robot_options, experiment.seed);
+    robot->set_sonar_threads(options.sonar_threads);
   } catch (const std::invalid_argument& e) {
     throw yaml::ConfigError(experiment.file.string(), robot_block.line(), "robot", e.what());
   }

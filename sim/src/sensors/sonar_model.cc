@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "helper_thread.h"
 #include "sonar_raycast.h"
 
 namespace cogmap::sim {
@@ -88,6 +89,21 @@ SonarModel::SonarModel(const SonarModelOptions& options, const mapper::RobotGeom
     }
   }
 }
+
+SonarModel::~SonarModel() = default;
+SonarModel::SonarModel(SonarModel&&) noexcept = default;
+SonarModel& SonarModel::operator=(SonarModel&&) noexcept = default;
+
+void SonarModel::set_threads(int threads) {
+  require(threads == 1 || threads == 2, "threads must be 1 or 2");
+  if (threads == 1) {
+    helper_.reset();
+  } else if (!helper_) {
+    helper_ = std::make_unique<sonar_detail::HelperThread>();
+  }
+}
+
+int SonarModel::threads() const { return helper_ ? 2 : 1; }
 
 void SonarModel::set_cycle_ms(double cycle_ms, double now_s) {
   require(cycle_ms >= kMinCycleMs && cycle_ms <= kMaxCycleMs,
@@ -177,46 +193,67 @@ mapper::SonarReading SonarModel::ping(const SonarScene& scene, const mapper::Pos
   return ping_indexed(scene, true_pose, index, time_s);
 }
 
-mapper::SonarReading SonarModel::ping_indexed(const SonarScene& scene,
-                                              const mapper::Pose2& true_pose, int index,
-                                              double time_s) {
-  const sonar_detail::Cone cone = cone_at(true_pose, index);  // throws before anything is drawn
+struct SonarModel::PingDraws {
+  sonar_detail::Cone cone;
+  int index = 0;
+  double time_s = 0.0;
+  double z = 0.0;          // range noise, standard normal
+  double u = 0.0;          // dropout, uniform in [0, 1)
+  std::uint64_t seed = 0;  // the ping's own stream: which echo candidates are heard
+};
+
+SonarModel::PingDraws SonarModel::draw_ping(const mapper::Pose2& true_pose, int index,
+                                            double time_s) {
+  PingDraws d;
+  d.cone = cone_at(true_pose, index);  // throws before anything is drawn
+  d.index = index;
+  d.time_s = time_s;
   // Draw the same three numbers on every ping so the main stream advances identically whatever
   // the scene; a change in one wall then does not reshuffle the noise of every later reading.
-  const double z = std::normal_distribution<double>(0.0, 1.0)(rng_);
-  const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng_);
-  PingStream detector{rng_()};
+  d.z = std::normal_distribution<double>(0.0, 1.0)(rng_);
+  d.u = std::uniform_real_distribution<double>(0.0, 1.0)(rng_);
+  d.seed = rng_();
+  return d;
+}
 
+mapper::SonarReading SonarModel::trace_ping(const SonarScene& scene, const PingDraws& d) const {
+  PingStream detector{d.seed};
   const double min_m = geometry_.sonar_min_range_m;
   const double max_m = geometry_.sonar_max_range_m;
   mapper::SonarReading r;
-  r.index = index;
-  r.time_s = time_s;
+  r.index = d.index;
+  r.time_s = d.time_s;
   r.echo = false;
   r.range_m = max_m;
-  if (u < options_.dropout_probability) return r;  // nothing to trace
+  if (d.u < options_.dropout_probability) return r;  // nothing to trace
   // The receiver triggers on the first echo that crosses its threshold: candidates in range
   // order, each heard independently (speckle of a rough surface) with its own probability.
   struct Receiver final : sonar_detail::EchoListener {
     PingStream& detector;
     double p = 0.0;
-    explicit Receiver(PingStream& d) : detector(d) {}
+    explicit Receiver(PingStream& s) : detector(s) {}
     bool hears(const EchoCandidate& c) override {
       p = detection_probability(c.strength);
       return detector.uniform() < p;
     }
   } receiver(detector);
   const std::optional<EchoCandidate> heard =
-      sonar_detail::first_heard(scene, cone, options_, index_.get(), receiver);
+      sonar_detail::first_heard(scene, d.cone, options_, index_.get(), receiver);
   if (!heard) return r;
   // A weak echo crosses the threshold late in its envelope (threshold walk). The receiver is
   // blanked for the first ~0.1 m (transducer ringing): a nearer surface is heard only once
   // the blanking ends, so it reads as min range; noise never takes it below.
   const double range_m = heard->range_m + options_.threshold_walk_m * (1.0 - receiver.p);
-  const double noisy = range_m + z * range_noise_sd_m(range_m);
+  const double noisy = range_m + d.z * range_noise_sd_m(range_m);
   r.echo = true;
   r.range_m = std::clamp(noisy, min_m, max_m);
   return r;
+}
+
+mapper::SonarReading SonarModel::ping_indexed(const SonarScene& scene,
+                                              const mapper::Pose2& true_pose, int index,
+                                              double time_s) {
+  return trace_ping(scene, draw_ping(true_pose, index, time_s));
 }
 
 std::vector<mapper::SonarReading> SonarModel::cycle(
@@ -224,7 +261,11 @@ std::vector<mapper::SonarReading> SonarModel::cycle(
     const std::function<mapper::Pose2(double)>& true_pose_at) {
   std::vector<mapper::SonarReading> out;
   if (!(t1_s > t0_s)) return out;
-  bool indexed = false;  // the scene is checked against the index once, at the first firing
+  // First every firing's pose and random draws, in order; then the tracing, which needs nothing
+  // but the draws and the scene and so may be shared with the helper thread.
+  thread_local std::vector<PingDraws> kept;
+  std::vector<PingDraws>& draws = kept;  // the helper must see this thread's list, not its own
+  draws.clear();
   for (;; ++next_firing_) {
     // Firing k of the current schedule happens at start + (k + 1) * cycle, computed from k
     // rather than accumulated, so rounding never drifts the schedule.
@@ -237,12 +278,20 @@ std::vector<mapper::SonarReading> SonarModel::cycle(
       if (sequence.empty()) continue;
       const int index = sequence[position_[a] % sequence.size()];
       position_[a] = (position_[a] + 1) % sequence.size();
-      if (!indexed) {
-        update_index(scene);
-        indexed = true;
-      }
-      out.push_back(ping_indexed(scene, pose, index, t));
+      draws.push_back(draw_ping(pose, index, t));
     }
+  }
+  if (draws.empty()) return out;
+  update_index(scene);  // the scene is checked against the index once per call
+  out.resize(draws.size());
+  auto trace = [&](int i) {
+    const auto k = static_cast<std::size_t>(i);
+    out[k] = trace_ping(scene, draws[k]);
+  };
+  if (helper_ && draws.size() > 1) {
+    helper_->run(static_cast<int>(draws.size()), trace);
+  } else {
+    for (std::size_t k = 0; k < draws.size(); ++k) trace(static_cast<int>(k));
   }
   return out;
 }

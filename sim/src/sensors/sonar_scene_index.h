@@ -15,7 +15,8 @@
 
 namespace cogmap::sim::sonar_detail {
 
-/// Cells of a uniform grid holding the surfaces and corners that come near them.
+/// Cells of a uniform grid holding the surfaces and corners that come near them. Several threads
+/// may query one index at once: each query uses its own thread's scratch.
 class SceneIndex {
  public:
   /// Builds the grid over `scene` (copied, so the index can tell when a scene has changed).
@@ -27,7 +28,7 @@ class SceneIndex {
 
   /// Surface indices of every surface passing within the padding of the segment
   /// origin + t·dir, t in [0, max_t_m] (a superset of the surfaces it can hit), each once, in
-  /// cell order. `out` is cleared first. Not thread-safe (query scratch).
+  /// cell order. `out` is cleared first.
   void surfaces_near_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
                          std::vector<int>& out) const;
 
@@ -36,14 +37,14 @@ class SceneIndex {
   /// distance t of the nearest hit found so far (anything >= max_t_m for none). The walk stops
   /// after a cell the ray leaves more than the padding beyond that hit: a surface listed only
   /// further on cannot be hit nearer, so a test that keeps the nearest hit (ties to one fixed
-  /// surface, whatever the order) answers exactly as over surfaces_near_ray. Not thread-safe.
+  /// surface, whatever the order) answers exactly as over surfaces_near_ray.
   template <class Test>
   void walk_ray(const mapper::Point2& origin, const mapper::Point2& dir, double max_t_m,
                 Test&& test) const;
 
   /// Surface indices of every surface listed in a cell the box [lo, hi] touches (a superset of
   /// the surfaces passing through the box), each once, in no particular order. `out` is cleared
-  /// first. Not thread-safe (query scratch).
+  /// first.
   void surfaces_in_box(const mapper::Point2& lo, const mapper::Point2& hi,
                        std::vector<int>& out) const;
 
@@ -66,13 +67,20 @@ class SceneIndex {
   /// Calls `visit(cell)` for every cell the box [lo, hi] touches.
   template <class Visit>
   void for_cells_of_box(const mapper::Point2& lo, const mapper::Point2& hi, Visit&& visit) const;
-  /// Calls `visit(id)` for each surface listed in `cell` that the current query has not met.
+  /// A thread's query scratch: the query number that last took each surface of one index.
+  /// Kept per thread, so that several threads may query one index at once.
+  struct QueryScratch {
+    std::uint64_t index_id = 0;  // the index the stamps belong to (0: none yet)
+    std::vector<std::uint32_t> stamp;
+    std::uint32_t query = 0;
+  };
+  /// Calls `visit(id)` for each surface listed in `cell` that query `q` has not met.
   template <class Visit>
-  void for_new_surfaces_of_cell(int cell, Visit&& visit) const;
+  void for_new_surfaces_of_cell(int cell, QueryScratch& q, Visit&& visit) const;
   int column_of(double x) const;
   int row_of(double y) const;
-  /// Starts a query: afterwards no surface counts as taken (stamp_ != query_).
-  void next_query() const;
+  /// Starts a query on this thread's scratch: afterwards no surface counts as taken.
+  QueryScratch& next_query() const;
 
   SonarScene scene_;
   double x0_ = 0.0, y0_ = 0.0, cell_m_ = 1.0;
@@ -81,10 +89,9 @@ class SceneIndex {
   // surface_start_[c + 1]), ascending; likewise for corners.
   std::vector<std::uint32_t> surface_start_, corner_start_;
   std::vector<int> surface_ids_, corner_ids_;
-  // Query scratch: the query number that last took each surface (one model per thread, as the
-  // SonarModel that owns the index already requires).
-  mutable std::vector<std::uint32_t> stamp_;
-  mutable std::uint32_t query_ = 0;
+  // Which thread scratch is this index's (unique per index made in this process; a copy
+  // shares it, as it shares the scene).
+  std::uint64_t id_;
 };
 
 // Clamp in double before converting: far-away or non-finite query points map to the border cells
@@ -115,22 +122,28 @@ void SceneIndex::for_cells_of_box(const mapper::Point2& lo, const mapper::Point2
 }
 
 template <class Visit>
-void SceneIndex::for_new_surfaces_of_cell(int cell, Visit&& visit) const {
+void SceneIndex::for_new_surfaces_of_cell(int cell, QueryScratch& q, Visit&& visit) const {
   for (std::uint32_t k = surface_start_[cell]; k < surface_start_[cell + 1]; ++k) {
     const int id = surface_ids_[k];
-    std::uint32_t& seen = stamp_[static_cast<std::size_t>(id)];
-    if (seen == query_) continue;
-    seen = query_;
+    std::uint32_t& seen = q.stamp[static_cast<std::size_t>(id)];
+    if (seen == q.query) continue;
+    seen = q.query;
     visit(id);
   }
 }
 
-inline void SceneIndex::next_query() const {
-  if (stamp_.size() != scene_.surfaces.size()) stamp_.assign(scene_.surfaces.size(), 0);
-  if (++query_ == 0) {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    query_ = 1;
+inline SceneIndex::QueryScratch& SceneIndex::next_query() const {
+  thread_local QueryScratch q;
+  if (q.index_id != id_) {
+    q.index_id = id_;
+    q.stamp.assign(scene_.surfaces.size(), 0);
+    q.query = 0;
   }
+  if (++q.query == 0) {
+    std::fill(q.stamp.begin(), q.stamp.end(), 0);
+    q.query = 1;
+  }
+  return q;
 }
 
 template <class Test>
@@ -145,7 +158,7 @@ void SceneIndex::walk_ray(const mapper::Point2& origin, const mapper::Point2& di
     for (const int id : all) test(id);
     return;
   }
-  next_query();
+  QueryScratch& q = next_query();
   // Clip [0, max_t_m] to the grid's box (it holds every surface with a margin), so a ray from
   // outside starts where it enters.
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -181,7 +194,7 @@ void SceneIndex::walk_ray(const mapper::Point2& origin, const mapper::Point2& di
   };
   double t_c = exit_c(c), t_r = exit_r(r);
   for (;;) {
-    for_new_surfaces_of_cell(r * nx_ + c, [&](int id) { nearest_m = test(id); });
+    for_new_surfaces_of_cell(r * nx_ + c, q, [&](int id) { nearest_m = test(id); });
     const double t_leave = std::min(t_c, t_r);
     if (t_leave >= t_out) return;  // the ray ends in this cell
     // A hit at t lies in the cell the walk is in at t, and its surface is listed in every cell

@@ -70,6 +70,9 @@ class SimRobot final : public mapper::Robot {
   /// The sonar firing cycle from now on, milliseconds (P2OS SONAR_CYCLE, 2-120 ms); throws
   /// std::invalid_argument outside that range.
   void set_sonar_cycle_ms(double cycle_ms) { sonar_.set_cycle_ms(cycle_ms, sim_time_s()); }
+  /// Traces each frame's pings on 1 or 2 threads (SonarModel::set_threads); the frames are
+  /// bit-identical either way.
+  void set_sonar_threads(int threads) { sonar_.set_threads(threads); }
   /// Re-sequences one sonar array (P2OS POLLING); throws std::invalid_argument for a
   /// transducer not on that array.
   void set_sonar_polling(int array, const std::vector<int>& sequence) {

@@ -22,6 +22,7 @@ namespace cogmap::sim {
 namespace sonar_detail {
 class SceneIndex;
 struct Cone;
+class HelperThread;
 }  // namespace sonar_detail
 
 /// What sonar can hit, world frame, metres.
@@ -111,6 +112,16 @@ class SonarModel {
   /// transducer the geometry does not have.
   SonarModel(const SonarModelOptions& options, const mapper::RobotGeometry& geometry,
              std::uint64_t seed);
+  ~SonarModel();
+  SonarModel(SonarModel&&) noexcept;
+  SonarModel& operator=(SonarModel&&) noexcept;
+
+  /// How many threads trace the pings of one cycle() call: 1 (the default) or 2 (a helper
+  /// thread shares them). The readings are bit-identical either way: each ping's random draws
+  /// are taken in order on the calling thread before any is traced, and tracing reads only the
+  /// scene. Throws std::invalid_argument for anything else.
+  void set_threads(int threads);
+  int threads() const;
 
   /// Readings of the transducers that fire in (t0_s, t1_s]; true_pose_at(t) gives the true pose
   /// (world) at time t. Every cycle_ms each array fires the next disc of its polling sequence,
@@ -171,6 +182,7 @@ class SonarModel {
   /// is a cache, so echo_candidates stays const (one model is not meant to be shared between
   /// threads: ping() already advances its random stream).
   mutable std::shared_ptr<const sonar_detail::SceneIndex> index_;
+  std::unique_ptr<sonar_detail::HelperThread> helper_;  // set_threads(2)
 
   /// Transducer `index`'s cone at `true_pose` (throws std::out_of_range for an unknown one),
   /// with index_ brought up to date for `scene`.
@@ -182,6 +194,12 @@ class SonarModel {
   void update_index(const SonarScene& scene) const;
   /// ping() against the scene index_ was last brought up to date for: cycle() checks the scene
   /// once for all its pings (the check compares every surface).
+  /// A ping's cone and random draws, taken in firing order from the main stream.
+  struct PingDraws;
+  PingDraws draw_ping(const mapper::Pose2& true_pose, int index, double time_s);
+  /// The reading of a drawn ping: reads only the options, the scene and its index, so any
+  /// number of threads may trace pings at once.
+  mapper::SonarReading trace_ping(const SonarScene& scene, const PingDraws& draws) const;
   mapper::SonarReading ping_indexed(const SonarScene& scene, const mapper::Pose2& true_pose,
                                     int index, double time_s);
 };
