@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include "cogmap/experiments/number_format.h"
@@ -12,6 +13,14 @@ namespace {
 using mapper::Point2;
 
 std::string f(double v) { return format_double(v); }
+
+/// ",v1,v2,..." appended in place.
+void append_fields(std::string& out, std::initializer_list<double> values) {
+  for (const double v : values) {
+    out += ',';
+    append_double(out, v);
+  }
+}
 
 // SVG numbers are rounded to 0.1 mm: plenty for a figure, and it keeps the file small.
 std::string svg_num(double v) {
@@ -42,14 +51,14 @@ void csv_chunks(std::string header, const Rows& rows, const AppendRow& append_ro
 void trajectory_csv_chunks(TrajectoryView rows, const std::function<void(std::string_view)>& emit,
                            std::size_t rows_per_chunk) {
   const auto append = [](std::string& out, const TrajectoryRow& r) {
-    out += f(r.t_s);
+    append_double(out, r.t_s);
     if (r.truth) {
-      out += "," + f(r.truth->x_m) + "," + f(r.truth->y_m) + "," + f(r.truth->theta_rad);
+      append_fields(out, {r.truth->x_m, r.truth->y_m, r.truth->theta_rad});
     } else {
       out += ",,,";
     }
-    out += "," + f(r.odometry.x_m) + "," + f(r.odometry.y_m) + "," + f(r.odometry.theta_rad);
-    out += "," + f(r.estimate.x_m) + "," + f(r.estimate.y_m) + "," + f(r.estimate.theta_rad);
+    append_fields(out, {r.odometry.x_m, r.odometry.y_m, r.odometry.theta_rad, r.estimate.x_m,
+                        r.estimate.y_m, r.estimate.theta_rad});
     out += '\n';
   };
   csv_chunks(
@@ -90,8 +99,9 @@ std::string trajectory_csv(TrajectoryView rows) {
 std::string segments_csv(std::span<const mapper::Mapper::MapSegment> segments) {
   std::string out = "asr_id,x1_m,y1_m,x2_m,y2_m\n";
   for (const auto& s : segments) {
-    out += std::to_string(s.asr_id) + "," + f(s.segment.a.x()) + "," + f(s.segment.a.y()) + "," +
-           f(s.segment.b.x()) + "," + f(s.segment.b.y()) + "\n";
+    out += std::to_string(s.asr_id);
+    append_fields(out, {s.segment.a.x(), s.segment.a.y(), s.segment.b.x(), s.segment.b.y()});
+    out += '\n';
   }
   return out;
 }

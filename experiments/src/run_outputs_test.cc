@@ -8,10 +8,37 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cogmap/experiments/number_format.h"
 #include "cogmap/experiments/run_metrics.h"
 
 namespace cogmap::experiments {
 namespace {
+
+TEST(NumberFormat, AppendedTextIsTheFormattedText) {
+  const double cases[] = {0.0,
+                          -0.0,
+                          0.1,
+                          -2.5,
+                          1e-7,
+                          1.0 / 3.0,
+                          std::numeric_limits<double>::denorm_min(),
+                          std::numeric_limits<double>::max(),
+                          std::numeric_limits<double>::infinity(),
+                          -std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::quiet_NaN()};
+  const char* expected[] = {"0",      "-0",
+                            "0.1",    "-2.5",
+                            "1e-07",  "0.3333333333333333",
+                            "5e-324", "1.7976931348623157e+308",
+                            "inf",    "-inf",
+                            "nan"};
+  for (std::size_t i = 0; i < std::size(cases); ++i) {
+    std::string out = "x=";
+    append_double(out, cases[i]);
+    EXPECT_EQ(out, std::string("x=") + expected[i]);
+    EXPECT_EQ(format_double(cases[i]), expected[i]);
+  }
+}
 
 TEST(RunOutputs, TrajectoryCsvColumnsAndEmptyTruth) {
   std::vector<TrajectoryRow> rows(2);
