@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "helper_thread.h"
 #include "sonar_raycast.h"
@@ -99,7 +100,13 @@ void SonarModel::set_threads(int threads) {
   if (threads == 1) {
     helper_.reset();
   } else if (!helper_) {
-    helper_ = std::make_unique<sonar_detail::HelperThread>();
+    try {
+      helper_ = std::make_unique<sonar_detail::HelperThread>();
+    } catch (const std::system_error&) {
+      // No thread to be had (a process or container thread limit): one thread traces every
+      // ping, with the very same readings; threads() then says 1.
+      helper_.reset();
+    }
   }
 }
 

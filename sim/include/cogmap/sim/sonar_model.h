@@ -119,7 +119,8 @@ class SonarModel {
   /// How many threads trace the pings of one cycle() call: 1 (the default) or 2 (a helper
   /// thread shares them). The readings are bit-identical either way: each ping's random draws
   /// are taken in order on the calling thread before any is traced, and tracing reads only the
-  /// scene. Throws std::invalid_argument for anything else.
+  /// scene. Throws std::invalid_argument for anything else. When the system refuses a new
+  /// thread, the model stays on one (threads() tells).
   void set_threads(int threads);
   int threads() const;
 
