@@ -1,6 +1,8 @@
 #include "helper_thread.h"
 
 #include <algorithm>
+#include <exception>
+#include <utility>
 
 namespace cogmap::sim::sonar_detail {
 namespace {
@@ -63,8 +65,20 @@ void HelperThread::run_erased(int n, void* context, Call call) {
                 std::memory_order_release);
     wake_.fetch_add(1, std::memory_order_seq_cst);
     if (sleeping_.load(std::memory_order_seq_cst)) wake_.notify_one();
-    int mine = 0;
-    for (int i; (i = take(generation_)) >= 0; ++mine) piece(i);
+    int mine = 0;  // jobs this thread took, or closed unrun after a failure
+    std::exception_ptr failure;
+    for (int i; (i = take(generation_)) >= 0;) {
+      ++mine;
+      try {
+        piece(i);
+      } catch (...) {
+        // Run no more of this list, but let the helper finish what it took: it still uses
+        // `piece` and what the jobs write, which leave scope when this throws.
+        failure = std::current_exception();
+        mine += close(generation_);
+        break;
+      }
+    }
     // Only jobs the helper has already taken are left: wait for them.
     for (int spins = 0; helper_done_.load(std::memory_order_acquire) != count - mine; ++spins) {
       if (spins < 1000) {
@@ -73,7 +87,25 @@ void HelperThread::run_erased(int n, void* context, Call call) {
         std::this_thread::yield();  // the helper was descheduled inside a job
       }
     }
+    // A job that threw on the helper is rethrown here, as it would have been on one thread.
+    std::exception_ptr helper_failure = std::exchange(helper_failure_, nullptr);
+    if (!failure) failure = std::move(helper_failure);
+    if (failure) std::rethrow_exception(failure);
     first += count;
+  }
+}
+
+int HelperThread::close(std::uint32_t generation) {
+  std::uint64_t list = list_.load(std::memory_order_acquire);
+  for (;;) {
+    if (static_cast<std::uint32_t>(list >> 32) != generation) return 0;
+    const std::uint64_t count = (list >> 16) & kMaxJobsPerList;
+    const std::uint64_t next = list & kMaxJobsPerList;
+    if (next >= count) return 0;
+    if (list_.compare_exchange_weak(list, list + (count - next), std::memory_order_acq_rel,
+                                    std::memory_order_acquire)) {
+      return static_cast<int>(count - next);
+    }
   }
 }
 
@@ -112,8 +144,16 @@ void HelperThread::serve() {
       spins = 0;
     }
     for (int i; (i = take(seen)) >= 0;) {
-      call_(context_, i);
-      helper_done_.fetch_add(1, std::memory_order_release);
+      int finished = 1;
+      try {
+        call_(context_, i);
+      } catch (...) {
+        // Kept for the owner, who rethrows it once the list is done; the rest of the list is
+        // closed (counted as this thread's, unrun).
+        helper_failure_ = std::current_exception();
+        finished += close(seen);
+      }
+      helper_done_.fetch_add(finished, std::memory_order_release);
     }
   }
 }

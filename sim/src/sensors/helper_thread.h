@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <exception>
 #include <thread>
 #include <type_traits>
 
@@ -15,8 +16,9 @@ namespace cogmap::sim::sonar_detail {
 /// helper the operating system has not scheduled only means the caller does every job itself);
 /// it waits only for a job the helper has already taken. Between lists the helper spins for a
 /// millisecond, yielding now and then (in the frame loop a list comes every ~40 µs), then sleeps
-/// until the next list. One owner thread calls run(); jobs must not call run() themselves, and
-/// must not throw (one thrown on the helper would end the process).
+/// until the next list. One owner thread calls run(); jobs must not call run() themselves. A job
+/// that throws (on either thread) stops the list: jobs not yet taken do not run, those taken
+/// finish, and run() rethrows the first exception.
 class HelperThread {
  public:
   HelperThread();
@@ -37,6 +39,8 @@ class HelperThread {
   /// Takes the next job of list `generation`: its index, or -1 when that list has none left
   /// (or is no longer the current one).
   int take(std::uint32_t generation);
+  /// Marks every job of list `generation` not yet taken as taken, without running it: how many.
+  int close(std::uint32_t generation);
   void serve();
 
   // One word so that a job is taken only from the list it belongs to: generation (high 32
@@ -46,6 +50,9 @@ class HelperThread {
   std::atomic<std::uint32_t> wake_{0};  // bumped for every list; the sleeping helper waits on it
   std::atomic<bool> sleeping_{false};
   std::atomic<bool> stop_{false};
+  // A job's exception on the helper: written before helper_done_ counts that job (release), read
+  // by the owner after it has seen the count (acquire).
+  std::exception_ptr helper_failure_;
   std::uint32_t generation_ = 0;  // the owner's: the current list
   void* context_ = nullptr;       // written before list_ is published, read after a job is taken
   Call call_ = nullptr;

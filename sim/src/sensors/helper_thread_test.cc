@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -95,6 +96,77 @@ TEST(HelperThread, SharedResultsMatchASingleThread) {
     helper.run(64, [&](int i) { shared[static_cast<std::size_t>(i)] = work(i); });
     ASSERT_EQ(shared, alone) << round;
   }
+}
+
+// Two jobs that hold on until both have started, so each thread has one (see above); the
+// job on `thrower` throws. Returns once run() has thrown (or not).
+struct TwoJobs {
+  std::atomic<int> started{0};
+  std::vector<std::thread::id> ran_on = std::vector<std::thread::id>(2);
+  std::vector<int> finished = std::vector<int>(2, 0);
+};
+
+void hold_until_both_started(TwoJobs& jobs) {
+  ++jobs.started;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (jobs.started.load() < 2 && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::yield();
+  }
+}
+
+TEST(HelperThread, AJobThrownOnTheHelperIsRethrownByRun) {
+  HelperThread helper;
+  const std::thread::id owner = std::this_thread::get_id();
+  for (int round = 0; round < 10; ++round) {
+    TwoJobs jobs;
+    EXPECT_THROW(helper.run(2,
+                            [&](int i) {
+                              jobs.ran_on[static_cast<std::size_t>(i)] = std::this_thread::get_id();
+                              hold_until_both_started(jobs);
+                              if (std::this_thread::get_id() != owner) {
+                                throw std::runtime_error("helper job failed");
+                              }
+                              jobs.finished[static_cast<std::size_t>(i)] = 1;
+                            }),
+                 std::runtime_error);
+    EXPECT_EQ(jobs.started.load(), 2);
+    // The owner's job still finished.
+    EXPECT_EQ(jobs.finished[0] + jobs.finished[1], 1);
+  }
+  // And the helper serves the next list as before.
+  const ListResult r = run_list(helper, 8);
+  for (const int c : r.calls) EXPECT_EQ(c, 1);
+}
+
+TEST(HelperThread, AJobThrownOnTheOwnerWaitsForTheHelpersJobThenStopsTheList) {
+  HelperThread helper;
+  const std::thread::id owner = std::this_thread::get_id();
+  for (int round = 0; round < 10; ++round) {
+    TwoJobs jobs;
+    std::atomic<int> later_jobs{0};
+    EXPECT_THROW(helper.run(50,
+                            [&](int i) {
+                              if (i >= 2) {
+                                ++later_jobs;
+                                return;
+                              }
+                              hold_until_both_started(jobs);
+                              if (std::this_thread::get_id() == owner) {
+                                throw std::logic_error("owner job failed");
+                              }
+                              // The helper's job is still running when the owner throws: run()
+                              // must not return before it has finished writing.
+                              std::this_thread::sleep_for(std::chrono::milliseconds(20));
+                              jobs.finished[static_cast<std::size_t>(i)] = 1;
+                            }),
+                 std::logic_error);
+    EXPECT_EQ(jobs.finished[0] + jobs.finished[1], 1);
+    // Each thread held one of the first two jobs until the owner threw and closed the list:
+    // none of the 48 later ones ran.
+    EXPECT_EQ(later_jobs.load(), 0);
+  }
+  const ListResult r = run_list(helper, 8);
+  for (const int c : r.calls) EXPECT_EQ(c, 1);
 }
 
 TEST(HelperThread, StopsWhileSpinningAndWhileAsleep) {

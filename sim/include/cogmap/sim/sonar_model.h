@@ -180,8 +180,8 @@ class SonarModel {
   std::mt19937_64 rng_;
   /// Spatial index of the last scene pinged, rebuilt when a scene differs from it bit for bit.
   /// It only speeds up the ray casts (results are identical to a full scan); mutable because it
-  /// is a cache, so echo_candidates stays const (one model is not meant to be shared between
-  /// threads: ping() already advances its random stream).
+  /// is a cache, so echo_candidates stays const. One model is driven by one thread (ping() and
+  /// cycle() advance its random stream); only cycle()'s own helper traces pings beside it.
   mutable std::shared_ptr<const sonar_detail::SceneIndex> index_;
   std::unique_ptr<sonar_detail::HelperThread> helper_;  // set_threads(2)
 
@@ -193,14 +193,14 @@ class SonarModel {
   sonar_detail::Cone cone_at(const mapper::Pose2& true_pose, int index) const;
   /// Rebuilds index_ if `scene` is not bit for bit the one it was built from.
   void update_index(const SonarScene& scene) const;
-  /// ping() against the scene index_ was last brought up to date for: cycle() checks the scene
-  /// once for all its pings (the check compares every surface).
   /// A ping's cone and random draws, taken in firing order from the main stream.
   struct PingDraws;
   PingDraws draw_ping(const mapper::Pose2& true_pose, int index, double time_s);
   /// The reading of a drawn ping: reads only the options, the scene and its index, so any
   /// number of threads may trace pings at once.
   mapper::SonarReading trace_ping(const SonarScene& scene, const PingDraws& draws) const;
+  /// ping() against the scene index_ was last brought up to date for: cycle() checks the scene
+  /// once for all its pings (the check compares every surface).
   mapper::SonarReading ping_indexed(const SonarScene& scene, const mapper::Pose2& true_pose,
                                     int index, double time_s);
 };
