@@ -2,13 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 
 namespace cogmap::mapper::nav {
 
 void ObstacleMemory::push(const Point2& world_m, double expires_s, bool contact) {
   if (options_.max_hits == 0) return;
-  while (hits_.size() >= options_.max_hits) hits_.pop_front();
+  // Full: the oldest go (all at once; the memory is full only with a very fast sonar).
+  if (hits_.size() >= options_.max_hits) {
+    hits_.erase(hits_.begin(),
+                hits_.begin() + static_cast<std::ptrdiff_t>(hits_.size() - options_.max_hits + 1));
+  }
   hits_.push_back({world_m, expires_s, contact});
 }
 
@@ -22,7 +27,7 @@ void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
   collect_clearing_beams(frame, pose, robot);
   // One pass over the memory forgets the expired hits and the echoes this frame's beams saw
   // through (a hit goes if any beam clears it, so the order of the tests does not matter).
-  // Contacts outlive echoes, so the deque is not sorted by expiry: it is filtered whole. A clock
+  // Contacts outlive echoes, so the list is not sorted by expiry: it is filtered whole. A clock
   // that jumped backwards (a new log) also invalidates everything remembered.
   const double tan_half = std::tan(options_.clear_half_angle_deg * std::numbers::pi / 180.0);
   std::erase_if(hits_, [&](const Hit& h) {

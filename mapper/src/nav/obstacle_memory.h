@@ -4,7 +4,6 @@
 /// never saw. The room grid is reset at every doorway; this memory is what keeps the robot
 /// from steering into the door frame it just passed.
 
-#include <deque>
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
@@ -31,7 +30,7 @@ class ObstacleMemory {
   void add_contact(const Pose2& pose, const RobotGeometry& robot, double time_s, bool forward);
 
   /// Hits still remembered, oldest first.
-  const std::deque<Hit>& hits() const { return hits_; }
+  const std::vector<Hit>& hits() const { return hits_; }
 
   /// True when at least one sonar echo (not a contact) is remembered: the sonar is live.
   bool has_echoes() const;
@@ -49,7 +48,7 @@ class ObstacleMemory {
                               const RobotGeometry& robot);
 
   MemoryOptions options_;
-  std::deque<Hit> hits_;
+  std::vector<Hit> hits_;            // a vector: filtered whole every frame, appended at the back
   std::vector<ClearingBeam> beams_;  ///< reused from frame to frame
 };
 

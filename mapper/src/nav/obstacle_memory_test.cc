@@ -46,6 +46,29 @@ TEST(ObstacleMemory, SkipsInvalidReadingsAndForgetsOldEchoes) {
   EXPECT_TRUE(memory.hits().empty());
 }
 
+TEST(ObstacleMemory, AFullMemoryForgetsItsOldestHitsFirst) {
+  const RobotGeometry robot = p2at_geometry();
+  MemoryOptions options;
+  options.max_hits = 3;
+  options.clear_half_angle_deg = 0.0;  // no clearing: only the bound removes hits
+  ObstacleMemory memory{options};
+  // Transducer 4 hears an echo at 1.0, 1.1, ... 1.4 m in five frames (robot at the origin).
+  for (int i = 0; i < 5; ++i) {
+    memory.add_frame(frame(0.1 * i, {{4, 1.0 + 0.1 * i, true, 0.0}}), {}, robot);
+  }
+  ASSERT_EQ(memory.hits().size(), 3u);
+  // The newest three, oldest first: 1.2, 1.3 and 1.4 m from the transducer.
+  const Point2 mount(robot.sonars[4].x_m, robot.sonars[4].y_m);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR((memory.hits()[static_cast<std::size_t>(k)].world_m - mount).norm(), 1.2 + 0.1 * k,
+                1e-9);
+  }
+  // The contacts' three points into a full memory: the echoes make room.
+  memory.add_contact({}, robot, 0.5, true);
+  ASSERT_EQ(memory.hits().size(), 3u);
+  for (const ObstacleMemory::Hit& h : memory.hits()) EXPECT_TRUE(h.contact);
+}
+
 TEST(ObstacleMemory, ContactsOutliveEchoes) {
   const RobotGeometry robot = p2at_geometry();
   ObstacleMemory memory{MemoryOptions{}};
