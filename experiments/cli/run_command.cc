@@ -5,13 +5,13 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
-#include <thread>
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/number_format.h"
 #include "cogmap/experiments/progress.h"
 #include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/runner.h"
+#include "cogmap/experiments/usable_cores.h"
 #include "cogmap/render/renderer.h"
 #include "command_registry.h"
 
@@ -29,7 +29,7 @@ struct RunArgs {
   bool no_figures = false;
   bool force = false;
   bool fsync = false;
-  int threads = 0;  // 0: two when the machine has two cores or more
+  int threads = 0;  // 0: two when the process may run on two cores or more
 };
 
 std::string opt_text(const std::optional<double>& v) { return v ? format_double(*v) : "n/a"; }
@@ -115,7 +115,7 @@ int run(const RunArgs& args) {
   // A helper thread traces half of each frame's sonar pings (bit-identical outputs): the
   // frame loop's one big piece of parallel work (docs/performance.md "Pings on two threads").
   options.sonar_threads =
-      args.threads > 0 ? args.threads : (std::thread::hardware_concurrency() >= 2 ? 2 : 1);
+      args.threads > 0 ? args.threads : (experiments::usable_cores() >= 2 ? 2 : 1);
   experiments::ProgressBar bar(experiments::ProgressBar::stderr_is_terminal());
   options.on_progress = [&bar](double t_s, double duration_s) {
     bar.update(t_s / duration_s, "t = " + std::to_string(static_cast<long>(t_s)) + " s");
@@ -163,9 +163,10 @@ const CommandRegistrar kRegistrar{
       sub->add_flag("--force", args->force, "replace a finished run in --out");
       sub->add_flag("--fsync", args->fsync,
                     "fsync every room and result file as it is written (survives a power cut)");
-      sub->add_option("--threads", args->threads,
-                      "threads tracing the simulated sonar: 1 or 2 (default 2 on two cores or "
-                      "more; outputs are the same)")
+      sub->add_option(
+             "--threads", args->threads,
+             "threads tracing the simulated sonar: 1 or 2 (default 2 on two usable cores or "
+             "more; outputs are the same)")
           ->check(CLI::Range(1, 2));
       sub->callback([&exit_code, args] { exit_code = run(*args); });
     }};

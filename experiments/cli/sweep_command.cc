@@ -10,6 +10,7 @@
 #include "cogmap/experiments/runner.h"
 #include "cogmap/experiments/sweep_plots.h"
 #include "cogmap/experiments/sweep_runner.h"
+#include "cogmap/experiments/usable_cores.h"
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/render/renderer.h"
 #include "command_registry.h"
@@ -40,16 +41,14 @@ std::string read_text(const fs::path& p) {
 }
 
 // --jobs N, or one per core when it is 0.
-unsigned job_count(unsigned jobs) {
-  return jobs > 0 ? jobs : std::max(1u, std::thread::hardware_concurrency());
-}
+unsigned job_count(unsigned jobs) { return jobs > 0 ? jobs : experiments::usable_cores(); }
 
 // A job per core keeps every core busy already: llvmpipe's own helper threads would only take
 // turns with the runs. Nine-room sweep, figures on, 2 cores, medians of 3: --jobs 2 3.14 ->
 // 2.89 s, --jobs 1 5.33 / 5.39 s (docs/performance.md, "Sweeps on two cores"). Called before
 // any thread of the sweep starts.
 void draw_without_rasteriser_threads_if_cores_are_full(unsigned jobs) {
-  if (jobs >= std::max(1u, std::thread::hardware_concurrency())) {
+  if (jobs >= experiments::usable_cores()) {
     render::rasterise_on_drawing_threads_only();
   }
 }

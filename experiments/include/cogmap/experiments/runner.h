@@ -34,7 +34,7 @@ struct RunOptions {
   /// unless --fsync (docs/performance.md "Durability").
   mapper::io::Durability durability = mapper::io::Durability::kSynced;
   /// Threads that trace a simulated frame's sonar pings: 1 or 2 (a helper thread; outputs are
-  /// bit-identical either way). `run` takes 2 when the machine has two cores or more; `sweep`
+  /// bit-identical either way). `run` takes 2 when the process may use two cores or more; `sweep`
   /// keeps 1, as its runs already share the cores (docs/performance.md "Pings on two threads").
   int sonar_threads = 1;
   /// Called about once a simulated second with the time reached (progress bars); may be empty.
