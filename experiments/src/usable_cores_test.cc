@@ -31,5 +31,19 @@ TEST(UsableCores, FollowsTheAffinityMask) {
 
 TEST(UsableCores, AtLeastOne) { EXPECT_GE(usable_cores(), 1u); }
 
+TEST(UsableCores, ACpuQuotaAllowsItsQuotientRoundedUp) {
+  EXPECT_EQ(cores_of_cpu_quota("150000", "100000"), 2u);  // docker --cpus=1.5
+  EXPECT_EQ(cores_of_cpu_quota("100000", "100000"), 1u);  // --cpus=1
+  EXPECT_EQ(cores_of_cpu_quota("50000", "100000"), 1u);   // half a core: still one
+  EXPECT_EQ(cores_of_cpu_quota("400000\n", " 100000"), 4u);
+  // No quota, or nothing readable: no limit (0).
+  EXPECT_EQ(cores_of_cpu_quota("max", "100000"), 0u);  // cgroup v2
+  EXPECT_EQ(cores_of_cpu_quota("-1", "100000"), 0u);   // cgroup v1
+  EXPECT_EQ(cores_of_cpu_quota("", ""), 0u);
+  EXPECT_EQ(cores_of_cpu_quota("100000", "0"), 0u);
+  EXPECT_EQ(cores_of_cpu_quota("1e5", "100000"), 0u);
+  EXPECT_EQ(cores_of_cpu_quota("99999999999999999999", "1"), 0u);  // does not fit: ignored
+}
+
 }  // namespace
 }  // namespace cogmap::experiments
