@@ -37,16 +37,17 @@ HelperThread::~HelperThread() {
   thread_.join();
 }
 
-int HelperThread::take(std::uint32_t generation) {
+HelperThread::Taken HelperThread::take(std::uint32_t generation, std::uint64_t most) {
   std::uint64_t list = list_.load(std::memory_order_acquire);
   for (;;) {
-    if (static_cast<std::uint32_t>(list >> 32) != generation) return -1;
+    if (static_cast<std::uint32_t>(list >> 32) != generation) return {};
     const std::uint64_t count = (list >> 16) & kMaxJobsPerList;
     const std::uint64_t next = list & kMaxJobsPerList;
-    if (next >= count) return -1;
-    if (list_.compare_exchange_weak(list, list + 1, std::memory_order_acq_rel,
+    if (next >= count) return {};
+    const std::uint64_t taken = std::min(most, count - next);
+    if (list_.compare_exchange_weak(list, list + taken, std::memory_order_acq_rel,
                                     std::memory_order_acquire)) {
-      return static_cast<int>(next);
+      return {static_cast<int>(next), static_cast<int>(taken)};
     }
   }
 }
@@ -55,9 +56,9 @@ void HelperThread::run_erased(int n, void* context, Call call) {
   // Longer lists go in pieces (the counter has 16 bits); the sonar's never need it.
   for (int first = 0; first < n;) {
     const int count = static_cast<int>(std::min<std::uint64_t>(kMaxJobsPerList, n - first));
-    auto piece = [&](int i) { call(context, first + i); };
-    context_ = &piece;
-    call_ = [](void* c, int i) { (*static_cast<decltype(piece)*>(c))(i); };
+    context_ = context;
+    call_ = call;
+    first_ = first;
     helper_done_.store(0, std::memory_order_relaxed);
     ++generation_;
     list_.store(static_cast<std::uint64_t>(generation_) << 32 | static_cast<std::uint64_t>(count)
@@ -67,15 +68,15 @@ void HelperThread::run_erased(int n, void* context, Call call) {
     if (sleeping_.load(std::memory_order_seq_cst)) wake_.notify_one();
     int mine = 0;  // jobs this thread took, or closed unrun after a failure
     std::exception_ptr failure;
-    for (int i; (i = take(generation_)) >= 0;) {
+    for (Taken job; (job = take(generation_, 1)).count > 0;) {
       ++mine;
       try {
-        piece(i);
+        call(context, first + job.first);
       } catch (...) {
-        // Run no more of this list, but let the helper finish what it took: it still uses
-        // `piece` and what the jobs write, which leave scope when this throws.
+        // Run no more of this list, but let the helper finish what it took: it still uses the
+        // job's context and what the jobs write, which leave scope when this throws.
         failure = std::current_exception();
-        mine += close(generation_);
+        mine += take(generation_, kMaxJobsPerList).count;
         break;
       }
     }
@@ -92,20 +93,6 @@ void HelperThread::run_erased(int n, void* context, Call call) {
     if (!failure) failure = std::move(helper_failure);
     if (failure) std::rethrow_exception(failure);
     first += count;
-  }
-}
-
-int HelperThread::close(std::uint32_t generation) {
-  std::uint64_t list = list_.load(std::memory_order_acquire);
-  for (;;) {
-    if (static_cast<std::uint32_t>(list >> 32) != generation) return 0;
-    const std::uint64_t count = (list >> 16) & kMaxJobsPerList;
-    const std::uint64_t next = list & kMaxJobsPerList;
-    if (next >= count) return 0;
-    if (list_.compare_exchange_weak(list, list + (count - next), std::memory_order_acq_rel,
-                                    std::memory_order_acquire)) {
-      return static_cast<int>(count - next);
-    }
   }
 }
 
@@ -143,15 +130,15 @@ void HelperThread::serve() {
       sleeping_.store(false, std::memory_order_relaxed);
       spins = 0;
     }
-    for (int i; (i = take(seen)) >= 0;) {
+    for (Taken job; (job = take(seen, 1)).count > 0;) {
       int finished = 1;
       try {
-        call_(context_, i);
+        call_(context_, first_ + job.first);
       } catch (...) {
         // Kept for the owner, who rethrows it once the list is done; the rest of the list is
         // closed (counted as this thread's, unrun).
         helper_failure_ = std::current_exception();
-        finished += close(seen);
+        finished += take(seen, kMaxJobsPerList).count;
       }
       helper_done_.fetch_add(finished, std::memory_order_release);
     }

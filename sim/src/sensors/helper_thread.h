@@ -36,11 +36,15 @@ class HelperThread {
  private:
   using Call = void (*)(void* context, int i);
   void run_erased(int n, void* context, Call call);
-  /// Takes the next job of list `generation`: its index, or -1 when that list has none left
-  /// (or is no longer the current one).
-  int take(std::uint32_t generation);
-  /// Marks every job of list `generation` not yet taken as taken, without running it: how many.
-  int close(std::uint32_t generation);
+  /// Jobs taken from a list: the first one's index and how many (0: none).
+  struct Taken {
+    int first = 0;
+    int count = 0;
+  };
+  /// Takes up to `most` jobs of list `generation` that nobody has taken yet (none when that
+  /// list is done or no longer the current one). One job to run it; all that are left to close
+  /// the list after a failure, unrun.
+  Taken take(std::uint32_t generation, std::uint64_t most);
   void serve();
 
   // One word so that a job is taken only from the list it belongs to: generation (high 32
@@ -54,8 +58,11 @@ class HelperThread {
   // by the owner after it has seen the count (acquire).
   std::exception_ptr helper_failure_;
   std::uint32_t generation_ = 0;  // the owner's: the current list
-  void* context_ = nullptr;       // written before list_ is published, read after a job is taken
+  // The current list's job, and the index of its first job when a long list goes in pieces:
+  // written before list_ is published, read after a job is taken.
+  void* context_ = nullptr;
   Call call_ = nullptr;
+  int first_ = 0;
   std::thread thread_;
 };
 
