@@ -13,8 +13,6 @@
 namespace cogmap::mapper {
 namespace {
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 /// One pair of the current round: the reference normal, the offset along it still to close,
 /// and the overlap that weighs it.
 struct Pair {

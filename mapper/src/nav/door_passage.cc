@@ -12,8 +12,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 /// The opening's normal from the wall it sits in: the two jamb points alone (0.9-1.2 m
 /// apart, one often on the wall's near face and one on its far face, each with range noise)
 /// tilt it by 5-15°, and a tilted axis leads the crossing into a jamb. The wall points within

@@ -10,8 +10,6 @@
 namespace cogmap::mapper::nav {
 namespace {
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Root mean square distance of `points` from the fitted line.
 double rms_distance_m(const LineFit& fit, const std::vector<Point2>& points) {
   double sum_sq = 0.0;

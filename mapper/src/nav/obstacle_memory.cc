@@ -39,7 +39,7 @@ void ObstacleMemory::add_frame(const SensorFrame& frame, const Pose2& pose,
       const Point2 d = h.world_m - beam.origin;
       const double along = d.dot(beam.axis);
       if (along <= 0.0 || along >= beam.free_m) continue;
-      const double lateral = std::abs(beam.axis.x() * d.y() - beam.axis.y() * d.x());
+      const double lateral = std::abs(cross(beam.axis, d));
       if (lateral <= std::max(options_.clear_min_half_width_m, along * tan_half)) return true;
     }
     return false;

@@ -8,11 +8,6 @@
 #include "cogmap/mapper/asr/stages.h"
 
 namespace cogmap::mapper::nav {
-namespace {
-
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-}  // namespace
 
 bool line_blocked(const std::vector<ObstaclePoint>& obstacles, const Point2& robot_m,
                   const Point2& goal_m, double radius_m, double from_m, double max_m) {

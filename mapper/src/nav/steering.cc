@@ -31,7 +31,7 @@ double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_r
     if (!(distance < nearest)) continue;
     if (by_offsets) {
       const double along = ahead.dot(o.offset_m);
-      const double across = std::abs(ahead.x() * o.offset_m.y() - ahead.y() * o.offset_m.x());
+      const double across = std::abs(cross(ahead, o.offset_m));
       if (along > 0.0) {
         if (across < along * tan_inner) {
           nearest = distance;

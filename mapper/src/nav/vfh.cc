@@ -72,9 +72,7 @@ int Vfh::sector_of_direction(const Point2& v) const {
   const int n = sector_count();
   int k = static_cast<int>(rough / sector_rad_ + 0.5);  // rough ≥ 0: truncation rounds
   if (k >= n) k -= n;
-  const auto above = [&](const Point2& border) {  // v turned anticlockwise from the border
-    return border.x() * v.y() - border.y() * v.x();
-  };
+  const auto above = [&](const Point2& border) { return cross(border, v); };  // v anticlockwise
   const std::size_t i = static_cast<std::size_t>(k);
   const double over_lower = above(borders_[i]), under_upper = -above(borders_[i + 1]);
   if (over_lower > kMargin && under_upper > kMargin) return k;

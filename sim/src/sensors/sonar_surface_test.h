@@ -15,9 +15,7 @@ namespace cogmap::sim::sonar_detail {
 // Rays start this far beyond their origin so a bounce never re-hits the surface it leaves.
 inline constexpr double kMinT = 1e-9;
 
-inline double cross(const mapper::Point2& a, const mapper::Point2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+using mapper::cross;
 
 /// Tests surface `i` against the ray origin + t·dir and keeps it if nearer than `best_t`.
 /// Equally distant surfaces: the higher index wins, whatever order they are tested in. Only the

@@ -29,8 +29,6 @@ bool on_segment(const Point2& a, const Point2& b, const Point2& p) {
 
 }  // namespace
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 double signed_area(const Polyline& polygon) {
   double twice = 0.0;
   for (std::size_t i = 0; i < polygon.size(); ++i) {

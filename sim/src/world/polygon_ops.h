@@ -8,8 +8,8 @@
 
 namespace cogmap::sim::geom {
 
-/// z of the 2D cross product a x b.
-double cross(const mapper::Point2& a, const mapper::Point2& b);
+/// z of the 2D cross product a x b (the mapper's own).
+using mapper::cross;
 
 /// Signed area of a closed polygon, m²: positive when counter-clockwise.
 double signed_area(const mapper::Polyline& polygon);

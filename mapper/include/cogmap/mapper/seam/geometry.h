@@ -19,6 +19,10 @@ struct Segment {
 /// An ordered chain of vertices, metres; consecutive vertices form the wall.
 using Polyline = std::vector<Point2>;
 
+/// The z component of a × b: positive when b lies anticlockwise of a; |a × b| / |a| is b's
+/// distance from the line along a.
+inline double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 /// Sum of segment lengths of a polyline, metres.
 double polyline_length_m(const Polyline& line);
 
