@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "sonar_raycast.h"
+
 namespace cogmap::sim::test_support {
 
 /// The repository's worlds/ (COGMAP_SOURCE_DIR overrides the source tree the build was made in).
@@ -30,5 +34,16 @@ inline std::vector<std::filesystem::path> shipped_worlds() {
 
 /// Equal to the last bit (also for -0.0 against 0.0, which == would call equal).
 inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Two ray hits the same to the last bit: surface, distance and point.
+inline ::testing::AssertionResult same_hit(const sonar_detail::RayHit& a,
+                                           const sonar_detail::RayHit& b) {
+  if (a.surface == b.surface && same_bits(a.t_m, b.t_m) && same_bits(a.point.x(), b.point.x()) &&
+      same_bits(a.point.y(), b.point.y())) {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure() << "surface " << a.surface << " against " << b.surface
+                                       << ", t " << a.t_m << " against " << b.t_m;
+}
 
 }  // namespace cogmap::sim::test_support

@@ -24,7 +24,7 @@ using mapper::Point2;
 using sonar_detail::FanSurfaces;
 using sonar_detail::first_hit;
 using sonar_detail::SceneIndex;
-using test_support::same_bits;
+using test_support::same_hit;
 using test_support::shipped_worlds;
 using test_support::world_path;
 
@@ -89,11 +89,7 @@ void expect_fan_matches_full_scan(const SonarScene& scene, std::uint64_t seed, i
       ASSERT_EQ(full.has_value(), fan.blocked(dir, max_t)) << "fan " << k;
       if (!full) continue;
       ++hits;
-      ASSERT_EQ(full->surface, by_fan->surface) << "fan " << k;
-      ASSERT_TRUE(same_bits(full->t_m, by_fan->t_m)) << "fan " << k;
-      ASSERT_TRUE(same_bits(full->point.x(), by_fan->point.x()) &&
-                  same_bits(full->point.y(), by_fan->point.y()))
-          << "fan " << k;
+      ASSERT_TRUE(same_hit(*full, *by_fan)) << "fan " << k;
       // Just short of the hit nothing blocks; the hit itself does.
       const double short_t = std::nextafter(full->t_m, 0.0);
       ASSERT_EQ(first_hit(scene, origin, dir, short_t).has_value(), fan.blocked(dir, short_t))

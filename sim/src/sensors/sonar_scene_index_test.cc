@@ -28,6 +28,7 @@ using sonar_detail::first_hit;
 using sonar_detail::SceneIndex;
 
 using test_support::same_bits;
+using test_support::same_hit;
 using test_support::shipped_worlds;
 using test_support::world_path;
 
@@ -75,11 +76,7 @@ void expect_same_hits(const SonarScene& scene, std::uint64_t seed, int rays) {
     ASSERT_EQ(full.has_value(), fast.has_value()) << "ray " << k;
     if (!full) continue;
     ++hits;
-    EXPECT_EQ(full->surface, fast->surface) << "ray " << k;
-    EXPECT_TRUE(same_bits(full->t_m, fast->t_m)) << "ray " << k;
-    EXPECT_TRUE(same_bits(full->point.x(), fast->point.x()) &&
-                same_bits(full->point.y(), fast->point.y()))
-        << "ray " << k;
+    EXPECT_TRUE(same_hit(*full, *fast)) << "ray " << k;
   }
   EXPECT_GT(hits, rays / 10);  // the comparison exercised real hits, not only misses
 }
