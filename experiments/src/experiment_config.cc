@@ -183,6 +183,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "em_odometry_prior",
                      "em_prior_shrinks",
                      "em_reference_rooms",
+                     "em_reference_bin_deg",
                      "em_drift_per_rad",
                      "em_smear_variance",
                      "em_min_direction_sigma_deg",
@@ -255,6 +256,10 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
     const int rooms = r->as<int>();  // a whole number: "expected an integer" otherwise
     if (rooms < 1 || rooms > 1000) r->fail("em_reference_rooms must be in [1, 1000]");
     o.localizer.reference_rooms = static_cast<std::size_t>(rooms);
+  }
+  if (block.child("em_reference_bin_deg")) {  // 0 = every reference direction on its own
+    o.localizer.reference_bin_rad =
+        number_in(block, "em_reference_bin_deg", 0.0, 10.0, 0.0) * std::numbers::pi / 180.0;
   }
   o.localizer.drift.per_rad_turned =
       number_in(block, "em_drift_per_rad", 0.0, 1.0, o.localizer.drift.per_rad_turned);

@@ -113,6 +113,16 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NE(error_of(p, {"mapper.em_reference_rooms=2.5"}).find("expected an integer"),
             std::string::npos);
   EXPECT_NE(error_of(p, {"mapper.glimpse_distance_m=0.1"}), "no error");
+  // The reference's bins, in degrees: none unless set (every direction on its own).
+  EXPECT_EQ(defaults.mapper.localizer.reference_bin_rad, 0.0);
+  EXPECT_NEAR(
+      load_experiment(p, {"mapper.em_reference_bin_deg=0.5"}).mapper.localizer.reference_bin_rad,
+      0.5 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_EQ(
+      load_experiment(p, {"mapper.em_reference_bin_deg=0"}).mapper.localizer.reference_bin_rad,
+      0.0);
+  EXPECT_NE(error_of(p, {"mapper.em_reference_bin_deg=-1"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.em_reference_bin_deg=nan"}), "no error");
 }
 
 TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {

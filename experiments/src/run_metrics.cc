@@ -192,6 +192,9 @@ std::string metrics_json_text(const RunMetrics& m) {
   Json room_ms = Json::array();
   for (const double s : m.room_cpu_s) room_ms.push_back(s * 1000.0);
   j["timing"]["room_cpu_ms"] = room_ms;
+  Json room_wall_ms = Json::array();
+  for (const double s : m.room_wall_s) room_wall_ms.push_back(s * 1000.0);
+  j["timing"]["room_wall_ms"] = room_wall_ms;
   return j.dump(2) + "\n";
 }
 

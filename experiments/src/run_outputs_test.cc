@@ -145,8 +145,15 @@ TEST(RunMetrics, PerRoomMappingTimeIsInMillisecondsUnderTiming) {
   ASSERT_EQ(j["timing"]["room_cpu_ms"].size(), 2u);
   EXPECT_DOUBLE_EQ(j["timing"]["room_cpu_ms"][0].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(j["timing"]["room_cpu_ms"][1].get<double>(), 0.5);
+  m.room_wall_s = {0.25, 0.0125};
+  const auto walls = nlohmann::json::parse(metrics_json_text(m))["timing"]["room_wall_ms"];
+  ASSERT_EQ(walls.size(), 2u);
+  EXPECT_DOUBLE_EQ(walls[0].get<double>(), 250.0);
+  EXPECT_DOUBLE_EQ(walls[1].get<double>(), 12.5);
   m.room_cpu_s.clear();
+  m.room_wall_s.clear();
   EXPECT_TRUE(nlohmann::json::parse(metrics_json_text(m))["timing"]["room_cpu_ms"].empty());
+  EXPECT_TRUE(nlohmann::json::parse(metrics_json_text(m))["timing"]["room_wall_ms"].empty());
 }
 
 TEST(RunMetrics, EachRoomSaysWhatEmMeasuredInDegrees) {

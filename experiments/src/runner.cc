@@ -208,10 +208,12 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   // mapper before the listener is called, durable as it finishes whatever happens here.
   std::optional<ErrorBreakdownBuilder> breakdown;
   if (truth) breakdown.emplace(truth->surfaces, occupied_threshold);
-  std::future<void> room_task;     // after `breakdown`: destroyed (so joined) before it
-  bool closing_run = false;        // mapper.finish() closes the last room after the last row
-  std::vector<double> room_cpu_s;  // per finished room: its pipeline and EM time
-  double mapping_cpu_s = 0.0;      // the two, summed over the rooms before
+  std::future<void> room_task;       // after `breakdown`: destroyed (so joined) before it
+  bool closing_run = false;          // mapper.finish() closes the last room after the last row
+  std::vector<double> room_cpu_s;    // per finished room: its pipeline and EM time
+  double mapping_cpu_s = 0.0;        // the two, summed over the rooms before
+  std::vector<double> room_wall_s;   // per finished room: the loop's wall time since the last
+  Clock::time_point room_wall_mark;  // the last room's end (the loop's start), figures excluded
   // The master maps (Fig. 4.4), corrected and odometry only, and the room reports, gathered as
   // each room is stored (the listener gets the very room the store just saved; reading them all
   // back at the end cost 0.65 M instructions a room): the walls stay, the grids go.
@@ -239,6 +241,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     const double mapping_now_s = mapper.stats().build_time_s + mapper.stats().localization_time_s;
     room_cpu_s.push_back(mapping_now_s - mapping_cpu_s);
     mapping_cpu_s = mapping_now_s;
+    const Clock::time_point wall_now = Clock::now() - figure_time;
+    room_wall_s.push_back(seconds(wall_now - room_wall_mark));
+    room_wall_mark = wall_now;
     const std::string stem = room_stem(asr.id);
     mapper::AsrTrace stages;  // what the grid file and add_room read
     stages.raw = trace.raw;
@@ -282,6 +287,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   std::optional<VisibleTruthTracker> visible_truth;
   if (truth) visible_truth.emplace(truth->surfaces, metric_options);
   const auto wall_start = Clock::now();
+  room_wall_mark = wall_start;
   try {
     double next_progress_s = 0.0;
     double last_time_s = 0.0;
@@ -366,6 +372,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.build_time_s = stats.build_time_s;
   m.localization_time_s = stats.localization_time_s;
   m.room_cpu_s = room_cpu_s;
+  m.room_wall_s = room_wall_s;
 
   try {
     std::vector<RoomSize> sizes;

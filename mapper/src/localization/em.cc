@@ -104,6 +104,13 @@ EmResult expectation_maximization(std::span<const double> samples, std::span<con
 EmResult expectation_maximization(std::span<const double> samples, std::span<const double> weights,
                                   std::span<const EmSource> sources,
                                   const GaussianMixture2& initial, const EmOptions& options) {
+  return expectation_maximization(samples, weights, sources, {}, initial, options);
+}
+
+EmResult expectation_maximization(std::span<const double> samples, std::span<const double> weights,
+                                  std::span<const EmSource> sources,
+                                  std::span<const double> spreads_rad2,
+                                  const GaussianMixture2& initial, const EmOptions& options) {
   EmResult result;
   GaussianMixture2 g = initial;
   const bool clutter = options.clutter_range_rad > 0.0;
@@ -152,7 +159,11 @@ EmResult expectation_maximization(std::span<const double> samples, std::span<con
       const double w = weights.empty() ? 1.0 : weights[i];
       for (int k = 0; k < 2; ++k) {
         const double d = samples[i] - *mu[k];
-        sum_sq[k] += w * q[i][k] * d * d;
+        if (spreads_rad2.empty()) {
+          sum_sq[k] += w * q[i][k] * d * d;
+        } else {
+          sum_sq[k] += w * q[i][k] * (d * d + spreads_rad2[i]);
+        }
       }
     }
     next.pi_s = sum_q[0] / total_w;

@@ -55,6 +55,38 @@ TEST(Em, ExactTwoPointClustersGiveExactMeans) {
   EXPECT_NEAR(r.mixture.sigma_m, 0.1, 1e-12);
 }
 
+TEST(Em, PooledSamplesWithTheirSpreadFitLikeTheirMembers) {
+  // One labelled component, no clutter: every responsibility is 1, so the fit is the weighted
+  // mean and variance, which a pooled sample (members' mean, summed weight, their spread) keeps.
+  const std::vector<double> members{0.010, 0.014, 0.020, -0.030, -0.026};
+  const std::vector<double> member_w{1.0, 2.0, 1.0, 3.0, 1.0};
+  const std::vector<EmSource> member_src(members.size(), EmSource::kM);
+  const std::vector<double> pooled{(0.010 + 2 * 0.014 + 0.020) / 4.0, (-3 * 0.030 - 0.026) / 4.0};
+  const std::vector<double> pooled_w{4.0, 4.0};
+  auto spread = [](std::vector<double> x, std::vector<double> w, double mean) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) sum += w[i] * (x[i] - mean) * (x[i] - mean);
+    return sum / 4.0;
+  };
+  const std::vector<double> pooled_spread{spread({0.010, 0.014, 0.020}, {1, 2, 1}, pooled[0]),
+                                          spread({-0.030, -0.026}, {3, 1}, pooled[1])};
+  const std::vector<EmSource> pooled_src(2, EmSource::kM);
+  GaussianMixture2 init;
+  init.pi_s = 0.0;
+  init.pi_m = 1.0;
+  init.mu_m = 0.05;
+  const EmResult a = expectation_maximization(members, member_w, member_src, init, EmOptions{});
+  const EmResult b =
+      expectation_maximization(pooled, pooled_w, pooled_src, pooled_spread, init, EmOptions{});
+  EXPECT_NEAR(b.mixture.mu_m, a.mixture.mu_m, 1e-15);
+  EXPECT_NEAR(b.mixture.sigma_m, a.mixture.sigma_m, 1e-15);
+  EXPECT_NEAR(a.mixture.mu_m, -0.00725, 1e-15);
+  EXPECT_NEAR(a.mixture.sigma_m, 0.0219303, 1e-7);  // √(Σ w (x − μ)² / Σ w)
+  // Without the spread the pooled fit is too narrow: the spread is what keeps σ.
+  const EmResult c = expectation_maximization(pooled, pooled_w, pooled_src, init, EmOptions{});
+  EXPECT_LT(c.mixture.sigma_m, a.mixture.sigma_m - 1e-4);
+}
+
 TEST(Em, IntegerWeightsEqualRepeatedSamples) {
   const std::vector<double> x{0.0, 0.1, 0.5, 0.55, 0.7};
   const std::vector<double> w{2.0, 1.0, 3.0, 1.0, 1.0};

@@ -3,6 +3,8 @@
 
 #include "cogmap/mapper/localization/localizer.h"
 
+#include "cogmap/mapper/localization/direction_bins.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,9 +31,11 @@ double gauss(double x, double mu, double sigma) {
 
 /// Variance of the weighted mean μ_k: σ_k² / n_k, with n_k = (Σ q w)² / Σ (q w)² the Kish
 /// effective number of samples EM gave to component k (q = responsibility of k, w = weight).
+/// A pooled sample (a bin) counts its members: `weight_sq[i]` is Σ w_j² over them (empty: w_i²).
 double mean_variance(std::span<const double> x, std::span<const double> w,
-                     std::span<const EmSource> sources, EmSource own, const GaussianMixture2& g,
-                     double clutter_range_rad, double min_sigma_rad) {
+                     std::span<const double> weight_sq, std::span<const EmSource> sources,
+                     EmSource own, const GaussianMixture2& g, double clutter_range_rad,
+                     double min_sigma_rad) {
   const bool is_s = own == EmSource::kS;
   const double pi = is_s ? g.pi_s : g.pi_m, mu = is_s ? g.mu_s : g.mu_m;
   const double sigma_fit = is_s ? g.sigma_s : g.sigma_m;
@@ -45,7 +49,7 @@ double mean_variance(std::span<const double> x, std::span<const double> w,
     const double p = pi * gauss(x[i], mu, sigma_fit);
     const double q = p + clutter > 0.0 ? p / (p + clutter) : 0.0;
     sum += q * w[i];
-    sum_sq += (q * w[i]) * (q * w[i]);
+    sum_sq += weight_sq.empty() ? (q * w[i]) * (q * w[i]) : q * q * weight_sq[i];
   }
   if (sum <= 0.0) return std::numeric_limits<double>::infinity();
   return sigma * sigma * sum_sq / (sum * sum);
@@ -97,11 +101,25 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
   // s: the new room's walls; m: the reference rooms' walls (the thesis's m is "the centre point
   // of the exit locations"; see docs for why we use the reference walls instead).
   const std::vector<LineDirection> s = line_directions(current_world);
-  const std::vector<LineDirection> m = line_directions(reference_world);
-  const double length_s_m = total_length_m(s), length_m_m = total_length_m(m);
+  const std::vector<LineDirection> m_lines = line_directions(reference_world);
+  const double length_s_m = total_length_m(s), length_m_m = total_length_m(m_lines);
   if (length_s_m < options_.min_wall_length_m || length_m_m < options_.min_wall_length_m) {
     return out;
   }
+
+  // The reference pooled in bins (options_.reference_bin_rad; 0 keeps every direction): EM's
+  // work then stops growing with the number of reference rooms. Unweighted, a bin weighs its
+  // count.
+  const bool binned = options_.reference_bin_rad > 0.0;
+  BinnedDirections m_bins;
+  if (binned) {
+    std::vector<LineDirection> pooled = m_lines;
+    if (!options_.weight_by_length) {
+      for (LineDirection& d : pooled) d.length_m = 1.0;
+    }
+    m_bins = bin_directions(pooled, options_.reference_bin_rad);
+  }
+  const std::vector<LineDirection>& m = binned ? m_bins.directions : m_lines;
 
   // Robust initialisation: each component starts at its own set's dominant direction.
   const double mode_s = dominant_direction_rad(s, options_.dominant);
@@ -120,7 +138,8 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
   for (const auto& [set, source] : {std::pair{&s, EmSource::kS}, std::pair{&m, EmSource::kM}}) {
     for (const LineDirection& d : *set) {
       samples.push_back(fold_direction_rad(d.angle_rad - mode_m));
-      weights.push_back(options_.weight_by_length ? d.length_m : 1.0);
+      weights.push_back(options_.weight_by_length || (source == EmSource::kM && binned) ? d.length_m
+                                                                                        : 1.0);
       // The source of every direction is known, so each sample is explained by its own
       // component (or clutter); pooled unlabelled, two overlapping Gaussians are not identifiable.
       sources.push_back(options_.label_sources ? source : EmSource::kUnknown);
@@ -129,9 +148,10 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
 
   GaussianMixture2 initial;
   const double clutter = std::clamp(options_.clutter_weight, 0.0, 0.9);
-  const double share_s = options_.weight_by_length
-                             ? length_s_m / (length_s_m + length_m_m)
-                             : static_cast<double>(s.size()) / static_cast<double>(samples.size());
+  const double share_s =
+      options_.weight_by_length
+          ? length_s_m / (length_s_m + length_m_m)
+          : static_cast<double>(s.size()) / static_cast<double>(s.size() + m_lines.size());
   initial.pi_s = (1.0 - clutter) * share_s;
   initial.pi_m = (1.0 - clutter) * (1.0 - share_s);
   initial.pi_clutter = clutter;
@@ -145,7 +165,15 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
 
   EmOptions em_options = options_.em;
   em_options.clutter_range_rad = clutter > 0.0 ? kQuarter : 0.0;  // folded data span 90°
-  out.em = expectation_maximization(samples, weights, sources, initial, em_options);
+  // A bin's members spread about its mean; the s samples are single directions.
+  std::vector<double> spreads, weight_sq;
+  if (binned) {
+    spreads.assign(s.size(), 0.0);
+    spreads.insert(spreads.end(), m_bins.spread_rad2.begin(), m_bins.spread_rad2.end());
+    for (std::size_t i = 0; i < s.size(); ++i) weight_sq.push_back(weights[i] * weights[i]);
+    weight_sq.insert(weight_sq.end(), m_bins.length_sq.begin(), m_bins.length_sq.end());
+  }
+  out.em = expectation_maximization(samples, weights, sources, spreads, initial, em_options);
 
   // Undo the centring, and turn the new room's direction onto the reference's.
   out.reference_direction_rad = fold_direction_rad(out.em.mixture.mu_m + mode_m);
@@ -157,9 +185,9 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
   const bool has_prior = std::isfinite(prior.sigma_rad);
   const double var_prior = prior.sigma_rad * prior.sigma_rad;
   const double var_meas =
-      mean_variance(samples, weights, own, EmSource::kS, out.em.mixture,
+      mean_variance(samples, weights, weight_sq, own, EmSource::kS, out.em.mixture,
                     em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
-      mean_variance(samples, weights, own, EmSource::kM, out.em.mixture,
+      mean_variance(samples, weights, weight_sq, own, EmSource::kM, out.em.mixture,
                     em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
       (has_prior && options_.smear_variance ? var_prior / 3.0 : 0.0);
   out.measurement_sigma_rad = std::sqrt(var_meas);

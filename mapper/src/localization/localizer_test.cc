@@ -122,6 +122,29 @@ TEST(Localizer, CorrectionBeyondTheLimitIsNotApplied) {
   EXPECT_NEAR(r.current_direction_rad, 30.0 * kDeg, 1e-6);  // the evidence is still reported
 }
 
+TEST(Localizer, ABinnedReferenceMeasuresWhatTheWholeReferenceDoes) {
+  // 32 rooms' worth of reference (the default reference_rooms), each with its own noise, and a
+  // room drifted by 4°: pooling the reference's ~2 000 directions in 0.25° bins leaves the
+  // answer and its sd where the directions one by one put them.
+  for (const std::uint64_t seed : {1u, 2u, 3u, 4u, 5u}) {
+    std::mt19937_64 rng(seed);
+    std::vector<Polyline> reference;
+    for (int room = 0; room < 32; ++room) {
+      const auto walls = testing::noisy_scene(12.0 * kDeg, 1.0 * kDeg, 0.2, rng);
+      reference.insert(reference.end(), walls.begin(), walls.end());
+    }
+    const auto current = testing::noisy_scene(16.0 * kDeg, 1.0 * kDeg, 0.2, rng);
+    LocalizerOptions pooled;
+    pooled.reference_bin_rad = 0.25 * kDeg;
+    const Localization binned = Localizer(pooled).estimate(reference, current);
+    const Localization exact = Localizer(LocalizerOptions{}).estimate(reference, current);
+    ASSERT_TRUE(binned.applied);
+    EXPECT_NEAR(exact.measured_rotation_rad, -4.0 * kDeg, 0.5 * kDeg);
+    EXPECT_NEAR(binned.measured_rotation_rad, exact.measured_rotation_rad, 0.002 * kDeg);
+    EXPECT_NEAR(binned.measurement_sigma_rad / exact.measurement_sigma_rad, 1.0, 0.002);
+  }
+}
+
 TEST(Localizer, IsDeterministic) {
   const Trial a = run(7.0, 10.0, 99), b = run(7.0, 10.0, 99);
   EXPECT_EQ(a.result.rotation_rad, b.result.rotation_rad);

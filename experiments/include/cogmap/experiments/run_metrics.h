@@ -75,6 +75,10 @@ struct RunMetrics {
   /// Per finished room, in order: time in its ASR pipeline and EM (the thesis claims it flat
   /// however many rooms came before; issue 13).
   std::vector<double> room_cpu_s;
+  /// Per finished room, in order: wall time of the run loop from the previous room's end (the
+  /// loop's start for the first) to this room's, figures excluded: everything a user waits for
+  /// while the room is driven and mapped (simulation, navigation, mapping, metrics).
+  std::vector<double> room_wall_s;
 };
 
 /// The JSON text (2-space indent, keys in a fixed order, shortest round-trip doubles, null for

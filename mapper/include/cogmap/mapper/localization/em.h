@@ -68,4 +68,13 @@ EmResult expectation_maximization(std::span<const double> samples, std::span<con
                                   std::span<const EmSource> sources,
                                   const GaussianMixture2& initial, const EmOptions& options);
 
+/// The same where sample i may stand for several directions pooled in a bin (a binned
+/// reference, direction_bins.h): `spreads_rad2[i]` is their weighted variance about samples[i],
+/// which the σ̂² of Eq. 3.21 adds (Σ_j w_j (x_j − μ)² = W ((x̄ − μ)² + spread)). Empty = all 0,
+/// the overload above.
+EmResult expectation_maximization(std::span<const double> samples, std::span<const double> weights,
+                                  std::span<const EmSource> sources,
+                                  std::span<const double> spreads_rad2,
+                                  const GaussianMixture2& initial, const EmOptions& options);
+
 }  // namespace cogmap::mapper
