@@ -363,5 +363,19 @@ TEST(NavTurning, SumsAbsoluteTurnsPerModeAcrossTheWrap) {
   EXPECT_EQ(nav.time_s_by_mode.count("turn"), 0u);
 }
 
+TEST(NavTurning, DriftByModeIsOdometryMinusTrueTurnSignedAcrossTheWrap) {
+  NavMetrics nav;
+  const double deg = std::numbers::pi / 180.0;
+  add_mode_drift(nav, "drive", 10.0 * deg, 9.5 * deg);   // odometry saw 0.5° too much
+  add_mode_drift(nav, "drive", -4.0 * deg, -4.2 * deg);  // ...and 0.2° too much the other way
+  // Across ±180°: odometry -358° (a 2° turn), truth 1.9°: 0.1° too much.
+  add_mode_drift(nav, "door_cross", -358.0 * deg, 1.9 * deg);
+  add_mode_drift(nav, "look", 0.0, -0.3 * deg);  // standing, the body slipped 0.3° clockwise
+  EXPECT_NEAR(nav.heading_drift_deg_by_mode.at("drive"), 0.7, 1e-9);
+  EXPECT_NEAR(nav.heading_drift_deg_by_mode.at("door_cross"), 0.1, 1e-9);
+  EXPECT_NEAR(nav.heading_drift_deg_by_mode.at("look"), 0.3, 1e-9);
+  EXPECT_EQ(nav.heading_drift_deg_by_mode.count("turn"), 0u);
+}
+
 }  // namespace
 }  // namespace cogmap::experiments

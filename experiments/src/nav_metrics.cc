@@ -90,6 +90,13 @@ void add_mode_interval(NavMetrics& nav, const std::string& mode, double dtheta_r
   nav.time_s_by_mode[mode] += dt_s;
 }
 
+void add_mode_drift(NavMetrics& nav, const std::string& mode, double odometry_dtheta_rad,
+                    double true_dtheta_rad) {
+  const double error =
+      std::remainder(odometry_dtheta_rad, 2.0 * M_PI) - std::remainder(true_dtheta_rad, 2.0 * M_PI);
+  nav.heading_drift_deg_by_mode[mode] += error * 180.0 / M_PI;
+}
+
 double odometry_distance_m(TrajectoryView rows) {
   double d = 0.0;
   std::optional<mapper::Point2> previous;  // a row is valid only until the next one is read

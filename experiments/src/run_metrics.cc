@@ -53,6 +53,9 @@ Json nav_json(const NavMetrics& n) {
   for (const auto& [mode, s] : n.time_s_by_mode) time[mode] = s;
   nav["turn_deg_by_mode"] = std::move(turn);
   nav["time_s_by_mode"] = std::move(time);
+  Json drift = Json::object();
+  for (const auto& [mode, deg] : n.heading_drift_deg_by_mode) drift[mode] = deg;
+  nav["heading_drift_deg_by_mode"] = std::move(drift);
   return nav;
 }
 

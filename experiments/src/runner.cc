@@ -279,6 +279,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   NavMetrics turning;      // odometry turning by commanding mode (nav block)
   std::string mode = mapper::nav::to_string(mapper::nav::NavMode::kIdle);
   std::optional<mapper::Pose2> last_odometry;
+  std::optional<double> last_true_theta_rad;  // the drift-by-mode metric's truth
   // Which true surfaces the robot could have sensed (the coverage's denominator) depends only
   // on the truth and the true path, and is the largest piece of the metrics (7 % of a nine-room
   // run's instructions): a worker works it out on the second core while the run goes.
@@ -301,8 +302,13 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       if (last_odometry) {
         add_mode_interval(turning, mode, odometry.theta_rad - last_odometry->theta_rad,
                           seen.time_s - last_time_s);
+        if (frame->true_pose && last_true_theta_rad) {  // a metric: truth only measures here
+          add_mode_drift(turning, mode, odometry.theta_rad - last_odometry->theta_rad,
+                         frame->true_pose->theta_rad - *last_true_theta_rad);
+        }
       }
       last_odometry = odometry;
+      if (frame->true_pose) last_true_theta_rad = frame->true_pose->theta_rad;
       last_time_s = seen.time_s;
       session.rows.push_back({frame->time_s, frame->true_pose, odometry, mapper.pose_estimate()});
       if (visible_truth && frame->true_pose) visible_truth->add(frame->true_pose->translation());
@@ -364,6 +370,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.nav.turn_deg = turning.turn_deg;
   m.nav.turn_deg_by_mode = std::move(turning.turn_deg_by_mode);
   m.nav.time_s_by_mode = std::move(turning.time_s_by_mode);
+  m.nav.heading_drift_deg_by_mode = std::move(turning.heading_drift_deg_by_mode);
   m.sim_time_s = session.sim_time_s;
   m.wall_time_s = session.wall_time_s;
   const mapper::MapperStats& stats = mapper.stats();

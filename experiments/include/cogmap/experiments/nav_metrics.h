@@ -42,11 +42,21 @@ struct NavMetrics {
   /// (`to_string(NavMode)`); modes never entered are absent.
   std::map<std::string, double> turn_deg_by_mode;
   std::map<std::string, double> time_s_by_mode;
+  /// Needs ground truth (empty otherwise): the odometry heading error each mode's frames added,
+  /// signed, degrees (Σ of odometry Δθ − true Δθ over the mode's frame intervals). Their sum is
+  /// the final odometry heading error, so this says which behaviour the drift came from.
+  std::map<std::string, double> heading_drift_deg_by_mode;
 };
 
 /// Adds one frame interval to the turning tallies: `dtheta_rad` is the odometry heading change
 /// over the interval (wrapped to [-π, π)), `dt_s` its length, `mode` the mode commanding it.
 void add_mode_interval(NavMetrics& nav, const std::string& mode, double dtheta_rad, double dt_s);
+
+/// Adds one frame interval's odometry heading error to `mode`'s drift tally: the odometry
+/// heading change minus the true one, each wrapped to [-π, π) (a change across ±180° counts
+/// as the short way round).
+void add_mode_drift(NavMetrics& nav, const std::string& mode, double odometry_dtheta_rad,
+                    double true_dtheta_rad);
 
 /// A frame counts as a contact when the true footprint (a length_m × width_m rectangle about
 /// the centre) is within this of a true surface: Box2D keeps polygons 0.01 m apart (its
