@@ -65,5 +65,35 @@ void BM_EmOneAsr(benchmark::State& state) {
 }
 BENCHMARK(BM_EmOneAsr)->Unit(benchmark::kMicrosecond);
 
+/// One room against a reference of the N rooms before it (the mapper's default is 32), with the
+/// reference's directions one by one (bin 0) or pooled in 0.25° bins
+/// (`mapper.em_reference_bin_deg`): args are N and the bin width in hundredths of a degree.
+void BM_LocalizeAgainstLongReference(benchmark::State& state) {
+  const auto rooms = make_run(11);
+  const int reference_rooms = static_cast<int>(state.range(0));
+  std::vector<Polyline> reference;
+  for (int i = 0; i < reference_rooms; ++i) {
+    const auto& room = rooms[static_cast<std::size_t>(i % (kAsrCount - 1))];
+    reference.insert(reference.end(), room.begin(), room.end());
+  }
+  LocalizerOptions options;
+  options.reference_bin_rad = static_cast<double>(state.range(1)) / 100.0 * kDeg;
+  const Localizer localizer{options};
+  int iterations = 0;
+  for (auto _ : state) {
+    const Localization r = localizer.estimate(reference, rooms[kAsrCount - 1]);
+    iterations = r.em.iterations;
+    benchmark::DoNotOptimize(r.rotation_rad);
+  }
+  state.counters["em_iterations"] = iterations;
+}
+BENCHMARK(BM_LocalizeAgainstLongReference)
+    ->Args({2, 0})
+    ->Args({32, 0})
+    ->Args({32, 25})
+    ->Args({256, 0})
+    ->Args({256, 25})
+    ->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 }  // namespace cogmap::mapper
