@@ -257,9 +257,12 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
     if (rooms < 1 || rooms > 1000) r->fail("em_reference_rooms must be in [1, 1000]");
     o.localizer.reference_rooms = static_cast<std::size_t>(rooms);
   }
-  if (block.child("em_reference_bin_deg")) {  // 0 = every reference direction on its own
-    o.localizer.reference_bin_rad =
-        number_in(block, "em_reference_bin_deg", 0.0, 10.0, 0.0) * std::numbers::pi / 180.0;
+  if (const auto b = block.child("em_reference_bin_deg")) {  // 0: every direction on its own
+    const double deg = number_in(block, "em_reference_bin_deg", 0.0, 10.0, 0.0);
+    // Narrower bins than 0.01° (9 000 to the quarter circle) pool nothing a 10 cm grid's walls
+    // could tell apart, and a vanishing width would ask for billions of bins.
+    if (deg > 0.0 && deg < 0.01) b->fail("em_reference_bin_deg must be 0 or in [0.01, 10]");
+    o.localizer.reference_bin_rad = deg * std::numbers::pi / 180.0;
   }
   o.localizer.drift.per_rad_turned =
       number_in(block, "em_drift_per_rad", 0.0, 1.0, o.localizer.drift.per_rad_turned);

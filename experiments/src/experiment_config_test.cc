@@ -123,6 +123,11 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
       0.0);
   EXPECT_NE(error_of(p, {"mapper.em_reference_bin_deg=-1"}), "no error");
   EXPECT_NE(error_of(p, {"mapper.em_reference_bin_deg=nan"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.em_reference_bin_deg=1e-9"}).find("[0.01, 10]"),
+            std::string::npos);
+  EXPECT_NEAR(
+      load_experiment(p, {"mapper.em_reference_bin_deg=0.01"}).mapper.localizer.reference_bin_rad,
+      0.01 * std::numbers::pi / 180.0, 1e-18);
 }
 
 TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {

@@ -11,6 +11,7 @@ namespace cogmap::mapper {
 namespace {
 
 constexpr double kQuarter = std::numbers::pi / 2.0;
+constexpr double kMaxBins = 1e6;
 
 struct BinSums {
   double length = 0.0;     // Σ w
@@ -23,7 +24,8 @@ struct BinSums {
 
 BinnedDirections bin_directions(std::span<const LineDirection> directions, double bin_rad) {
   BinnedDirections out;
-  if (!(bin_rad > 0.0) || !std::isfinite(bin_rad)) {
+  // Past a million bins (under 0.00009° each) pooling saves nothing: every direction stays.
+  if (!(bin_rad > 0.0) || !std::isfinite(bin_rad) || kQuarter / bin_rad > kMaxBins) {
     out.directions.assign(directions.begin(), directions.end());
     out.spread_rad2.assign(directions.size(), 0.0);
     for (const LineDirection& d : directions) out.length_sq.push_back(d.length_m * d.length_m);

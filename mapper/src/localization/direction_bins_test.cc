@@ -52,7 +52,8 @@ TEST(DirectionBins, ZeroLengthAndNonFiniteDirectionsAreLeftOut) {
 
 TEST(DirectionBins, NoBinWidthKeepsEveryDirection) {
   const std::vector<LineDirection> in{{10.2 * kDeg, 1.0}, {10.6 * kDeg, 3.0}};
-  for (const double width : {0.0, -1.0, std::numeric_limits<double>::infinity()}) {
+  for (const double width : {0.0, -1.0, std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::denorm_min(), 1e-12}) {
     const BinnedDirections b = bin_directions(in, width);
     ASSERT_EQ(b.directions.size(), 2u);
     EXPECT_EQ(b.directions[1].angle_rad, 10.6 * kDeg);

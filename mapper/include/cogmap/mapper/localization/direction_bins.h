@@ -23,7 +23,8 @@ struct BinnedDirections {
 /// Pools `directions` (folded into [−π/4, π/4)) into bins `bin_rad` wide that tile the quarter
 /// circle from −π/4; empty bins are left out, the rest come in angle order. Sums are kept as
 /// offsets from each bin's centre, so the mean and variance carry no cancellation. A bin_rad
-/// of 0 or less, or not finite, keeps every direction as its own entry (spread 0).
+/// of 0 or less, not finite, or so small the quarter circle would need more than a million
+/// bins keeps every direction as its own entry (spread 0).
 BinnedDirections bin_directions(std::span<const LineDirection> directions, double bin_rad);
 
 }  // namespace cogmap::mapper
