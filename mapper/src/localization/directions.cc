@@ -9,15 +9,13 @@
 #include "cogmap/mapper/localization/em.h"
 
 namespace cogmap::mapper {
-namespace {
-constexpr double kQuarter = std::numbers::pi / 2.0;
-}  // namespace
 
 double fold_direction_rad(double angle_rad) {
-  double folded = angle_rad - kQuarter * std::floor((angle_rad + kQuarter / 2.0) / kQuarter);
+  double folded = angle_rad - kQuarterTurnRad *
+                                  std::floor((angle_rad + kQuarterTurnRad / 2.0) / kQuarterTurnRad);
   // Rounding can land exactly on the open end of [−π/4, π/4).
-  if (folded >= kQuarter / 2.0) folded -= kQuarter;
-  if (folded < -kQuarter / 2.0) folded += kQuarter;
+  if (folded >= kQuarterTurnRad / 2.0) folded -= kQuarterTurnRad;
+  if (folded < -kQuarterTurnRad / 2.0) folded += kQuarterTurnRad;
   return folded;
 }
 
@@ -36,11 +34,11 @@ double mean_direction_rad(std::span<const double> angles_rad, std::span<const do
 double dominant_direction_rad(std::span<const LineDirection> directions,
                               const DominantDirectionOptions& options) {
   if (directions.empty()) return 0.0;
-  const int bins = std::max(1, static_cast<int>(std::lround(kQuarter / options.bin_rad)));
-  const double bin_rad = kQuarter / bins;
+  const int bins = std::max(1, static_cast<int>(std::lround(kQuarterTurnRad / options.bin_rad)));
+  const double bin_rad = kQuarterTurnRad / bins;
   std::vector<double> histogram(bins, 0.0);
   for (const LineDirection& d : directions) {
-    const double u = (fold_direction_rad(d.angle_rad) + kQuarter / 2.0) / bin_rad;
+    const double u = (fold_direction_rad(d.angle_rad) + kQuarterTurnRad / 2.0) / bin_rad;
     histogram[std::clamp(static_cast<int>(u), 0, bins - 1)] += d.length_m;
   }
   // Circular triangular smoothing, so 1° noise spreading a wall over neighbouring bins still
@@ -58,7 +56,7 @@ double dominant_direction_rad(std::span<const LineDirection> directions,
       best = b;
     }
   }
-  const double peak_rad = -kQuarter / 2.0 + (best + 0.5) * bin_rad;
+  const double peak_rad = -kQuarterTurnRad / 2.0 + (best + 0.5) * bin_rad;
   std::vector<double> angles, weights;
   for (const LineDirection& d : directions) {
     if (std::abs(fold_direction_rad(d.angle_rad - peak_rad)) > options.window_rad) continue;

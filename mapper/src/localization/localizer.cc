@@ -16,8 +16,6 @@
 namespace cogmap::mapper {
 namespace {
 
-constexpr double kQuarter = std::numbers::pi / 2.0;
-
 double total_length_m(std::span<const LineDirection> directions) {
   double sum = 0.0;
   for (const LineDirection& d : directions) sum += d.length_m;
@@ -164,7 +162,7 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
       std::max(direction_spread_rad(m, mode_m, window), options_.min_initial_sigma_rad);
 
   EmOptions em_options = options_.em;
-  em_options.clutter_range_rad = clutter > 0.0 ? kQuarter : 0.0;  // folded data span 90°
+  em_options.clutter_range_rad = clutter > 0.0 ? kQuarterTurnRad : 0.0;  // folded data span 90°
   // A bin's members spread about its mean; the s samples are single directions.
   std::vector<double> spreads, weight_sq;
   if (binned) {

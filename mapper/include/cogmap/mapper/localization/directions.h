@@ -2,12 +2,16 @@
 /// Statistics of wall directions modulo 90° (thesis §3.1.10): indoor walls are parallel or
 /// perpendicular, so a direction and the direction 90° away say the same thing about heading.
 
+#include <numbers>
 #include <span>
 #include <vector>
 
 namespace cogmap::mapper {
 
 struct LineDirection;
+
+/// The period of a wall direction: a quarter turn, π/2 radians.
+inline constexpr double kQuarterTurnRad = std::numbers::pi / 2.0;
 
 /// Folds an angle (radians) modulo π/2 into [−π/4, π/4): the direction equivalent to it under
 /// a quarter turn. This is what Eqs. 3.28-3.31 intend (see docs/algorithms.md).
