@@ -194,7 +194,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "glimpse_distance_m",
                      "glimpse_turn_deg",
                      "glimpse_min_wall_m",
-                     "glimpse_min_total_wall_m"});
+                     "glimpse_min_total_wall_m",
+                     "odometry_curvature_gain"});
   mapper::MapperOptions o;
   if (const auto g = block.child("grid")) {
     const std::string name = g->as<std::string>();
@@ -285,6 +286,10 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "glimpse_min_wall_m", 0.0, 100.0, o.glimpse.min_wall_length_m);
   o.glimpse.min_total_wall_m =
       number_in(block, "glimpse_min_total_wall_m", 0.0, 1000.0, o.glimpse.min_total_wall_m);
+  // A skid-steer's arcs (docs/algorithms.md, "Odometry recalibrated for arcs"): a track that
+  // changes by half either way is no skid-steer any more.
+  o.odometry_calibration.curvature_gain =
+      number_in(block, "odometry_curvature_gain", -0.5, 0.5, o.odometry_calibration.curvature_gain);
   if (const auto l = block.child("localization")) {
     const std::string s = l->as<std::string>();
     if (s == "em") {

@@ -128,6 +128,14 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NEAR(
       load_experiment(p, {"mapper.em_reference_bin_deg=0.01"}).mapper.localizer.reference_bin_rad,
       0.01 * std::numbers::pi / 180.0, 1e-18);
+  // The skid-steer's curvature gain: the odometry as reported unless set; at most ±0.5.
+  EXPECT_EQ(defaults.mapper.odometry_calibration.curvature_gain, 0.0);
+  EXPECT_DOUBLE_EQ(load_experiment(p, {"mapper.odometry_curvature_gain=0.066"})
+                       .mapper.odometry_calibration.curvature_gain,
+                   0.066);
+  EXPECT_NE(error_of(p, {"mapper.odometry_curvature_gain=0.6"}).find("[-0.5, 0.5]"),
+            std::string::npos);
+  EXPECT_NE(error_of(p, {"mapper.odometry_curvature_gain=nan"}), "no error");
 }
 
 TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {

@@ -109,7 +109,9 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"controller", m.controller},
                      {"grid", m.grid},
                      {"asr_boundary", m.boundary},
-                     {"localization", m.localization_kind}};
+                     {"localization", m.localization_kind},
+                     {"odometry_curvature_gain", m.odometry_curvature_gain},
+                     {"odometry_track_m", m.odometry_track_m}};
   j["asr_count"] = m.asr_count;
   j["frames"] = m.frames;
   if (m.route_completed) j["route_completed"] = *m.route_completed;

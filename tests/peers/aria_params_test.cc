@@ -66,7 +66,8 @@ void expect_model_matches(const mapper::RobotModel& m, const fs::path& file) {
   }
   EXPECT_NEAR(g.length_m * 1000, std::stod(p.values.at("RobotLength")), 1e-9);
   EXPECT_NEAR(g.width_m * 1000, std::stod(p.values.at("RobotWidth")), 1e-9);
-  EXPECT_NEAR(m.odometry_track_m, 2.0 / std::stod(p.values.at("DiffConvFactor")) / 1000, 1e-9);
+  EXPECT_NEAR(m.geometry.odometry_track_m, 2.0 / std::stod(p.values.at("DiffConvFactor")) / 1000,
+              1e-9);
 }
 
 TEST(AriaParams, EveryModelMatchesItsParameterFile) {

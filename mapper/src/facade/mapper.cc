@@ -50,6 +50,7 @@ struct Mapper::Impl {
   std::deque<std::vector<Polyline>> glimpse_walls;
   /// Variance of the heading error left after the last glimpse or room correction, rad².
   double glimpse_variance_rad2 = 0.0;
+  OdometryRecalibrator recalibrator;
   std::optional<Pose2> previous_odometry;
   AsrGraph graph;
   MapperStats stats;
@@ -89,7 +90,12 @@ struct Mapper::Impl {
                 opts.glimpse.enabled ? make_grid_updater(opts.grid, opts.grid_options, geometry)
                                      : nullptr,
                 builder_with_range(opts.builder, geometry), opts.localizer,
-                opts.grid_options.cell_scale_mm / 2000.0) {
+                opts.grid_options.cell_scale_mm / 2000.0),
+        // A differential drive's wheels roll: its odometry needs no re-integration for arcs.
+        recalibrator(geometry.drive == DriveKind::kSkidSteer
+                         ? opts.odometry_calibration.curvature_gain
+                         : 0.0,
+                     geometry.odometry_track_m) {
     options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
   }
 
@@ -316,12 +322,14 @@ void Mapper::set_room_listener(RoomListener listener) { impl_->listener = std::m
 std::optional<int> Mapper::process(const SensorFrame& frame) {
   Impl& m = *impl_;
   ++m.stats.frames;
+  // Everything below sees the odometry re-integrated for the base's arcs (as reported when
+  // options.odometry_calibration.curvature_gain is 0).
+  const Pose2 odometry = m.recalibrator.update(frame.odometry);
   const double turned_rad =
-      m.previous_odometry
-          ? wrap_angle_rad(frame.odometry.theta_rad - m.previous_odometry->theta_rad)
-          : 0.0;
-  m.previous_odometry = frame.odometry;
-  Pose2 pose = m.estimate(frame.odometry);
+      m.previous_odometry ? wrap_angle_rad(odometry.theta_rad - m.previous_odometry->theta_rad)
+                          : 0.0;
+  m.previous_odometry = odometry;
+  Pose2 pose = m.estimate(odometry);
   if (!m.started) {
     // Room 0 is entered at the known start pose.
     m.room.start(m.next_id++, frame.time_s, pose, Exit{pose.translation(), 0.0, pose.theta_rad, {}},
@@ -334,7 +342,7 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   m.integrate(frame, pose);
   if (m.options.glimpse.enabled && m.glimpse.visit(pose, turned_rad)) {
     m.finish_glimpse(pose);
-    pose = m.estimate(frame.odometry);
+    pose = m.estimate(odometry);
     m.glimpse.begin(pose);
   }
   m.room_lo = m.room_lo.cwiseMin(pose.translation());
@@ -349,7 +357,7 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
     finished = m.finish_room(frame.time_s, event);
     // The finished room's correction applies from now on: re-express pose and exit.
     const Pose2 fix = m.last_room_fix;
-    pose = m.estimate(frame.odometry);
+    pose = m.estimate(odometry);
     const Exit entry{fix.transform(event->exit_center),
                      event->exit_width_m,
                      wrap_angle_rad(event->heading_rad + fix.theta_rad),

@@ -326,5 +326,47 @@ TEST(Mapper, ARoomLargerThanTheExtentLimitEnds) {
   EXPECT_LT(small_peak, default_peak);
 }
 
+TEST(Mapper, OdometryIsReportedAsItCameByDefault) {
+  EXPECT_EQ(MapperOptions{}.odometry_calibration.curvature_gain, 0.0);
+}
+
+/// The odometry pose the mapper ends with after `steps` frames of a constant arc (0.05 m and
+/// `turn_rad` per frame, midpoint-integrated as the robot reports it) on `robot`.
+Pose2 odometry_after_arc(const RobotGeometry& robot, double gain, double turn_rad, int steps) {
+  MapperOptions options;
+  options.odometry_calibration.curvature_gain = gain;
+  MemoryAsrStore store;
+  Mapper mapper(options, robot, store, Pose2{});
+  Pose2 raw;
+  for (int k = 0; k <= steps; ++k) {
+    SensorFrame f;
+    f.time_s = 0.1 * k;
+    f.odometry = raw;
+    mapper.process(f);
+    const double mid = raw.theta_rad + 0.5 * turn_rad;
+    raw = {raw.x_m + 0.05 * std::cos(mid), raw.y_m + 0.05 * std::sin(mid),
+           wrap_angle_rad(raw.theta_rad + turn_rad)};
+  }
+  return mapper.odometry_pose();
+}
+
+TEST(Mapper, ASkidSteersArcsAreReintegratedWithTheCurvatureGain) {
+  const RobotGeometry robot = p2at_geometry();  // skid-steer, odometry track 0.588 m
+  ASSERT_EQ(robot.drive, DriveKind::kSkidSteer);
+  // 0.01 rad per 0.05 m: spin fraction 0.01 · 0.588 / 0.1 = 0.0588, so each turn is the
+  // odometry's divided by 1 + 0.05 · (0.0588 - 1): 60 frames of 0.01 rad make 0.63 rad.
+  const double s = 0.01 * robot.odometry_track_m / 0.1;
+  const Pose2 out = odometry_after_arc(robot, 0.05, 0.01, 60);
+  EXPECT_NEAR(out.theta_rad, 60 * 0.01 / (1.0 + 0.05 * (s - 1.0)), 1e-9);
+  EXPECT_NEAR(odometry_after_arc(robot, 0.0, 0.01, 60).theta_rad, 0.6, 1e-12);
+}
+
+TEST(Mapper, ADifferentialDrivesOdometryIsNeverReintegrated) {
+  RobotGeometry robot = p2at_geometry();
+  robot.drive = DriveKind::kDifferential;
+  const Pose2 out = odometry_after_arc(robot, 0.05, 0.01, 60);
+  EXPECT_NEAR(out.theta_rad, 0.6, 1e-12);
+}
+
 }  // namespace
 }  // namespace cogmap::mapper

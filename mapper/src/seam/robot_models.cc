@@ -82,9 +82,9 @@ RobotModel make(const char* name, const char* params, DriveKind drive, const Bod
   RobotModel m;
   m.name = name;
   m.aria_params = params;
-  m.drive = drive;
-  m.odometry_track_m = 2.0 / body.diff_conv / 1000.0;
   RobotGeometry& g = m.geometry;
+  g.drive = drive;
+  g.odometry_track_m = 2.0 / body.diff_conv / 1000.0;
   for (const auto* ring : rings) {
     for (const Mount& s : *ring) {
       g.sonars.push_back(

@@ -38,9 +38,9 @@ TEST(RobotModels, P2atMatchesTheP2atParameterFile) {
   expect_mount(g, 15, -144, 136, 90);
   EXPECT_DOUBLE_EQ(g.length_m, 0.626);
   EXPECT_DOUBLE_EQ(g.width_m, 0.505);
-  EXPECT_EQ(find_robot_model("p2at")->drive, DriveKind::kSkidSteer);
+  EXPECT_EQ(find_robot_model("p2at")->geometry.drive, DriveKind::kSkidSteer);
   // DiffConvFactor 0.0034 -> 2 / 0.0034 mm = 588 mm (docs/p2at.md).
-  EXPECT_NEAR(find_robot_model("p2at")->odometry_track_m, 0.5882, 1e-4);
+  EXPECT_NEAR(find_robot_model("p2at")->geometry.odometry_track_m, 0.5882, 1e-4);
 }
 
 TEST(RobotModels, P2atGeometryIsTheTableEntry) {
@@ -57,7 +57,7 @@ TEST(RobotModels, P2atGeometryIsTheTableEntry) {
 
 TEST(RobotModels, P3dxIsADifferentialDriveWithTheDxRing) {
   const RobotModel& m = *find_robot_model("p3dx");
-  EXPECT_EQ(m.drive, DriveKind::kDifferential);
+  EXPECT_EQ(m.geometry.drive, DriveKind::kDifferential);
   EXPECT_EQ(m.aria_params, "p3dx.p");
   ASSERT_EQ(m.geometry.sonars.size(), 16u);
   expect_mount(m.geometry, 0, 69, 136, 90);
@@ -69,7 +69,7 @@ TEST(RobotModels, P3dxIsADifferentialDriveWithTheDxRing) {
   EXPECT_DOUBLE_EQ(m.geometry.length_m, 0.511);
   EXPECT_DOUBLE_EQ(m.geometry.width_m, 0.425);
   EXPECT_DOUBLE_EQ(m.geometry.max_speed_mps, 1.0);
-  EXPECT_NEAR(m.odometry_track_m, 2.0 / 0.0056 / 1000.0, 1e-12);
+  EXPECT_NEAR(m.geometry.odometry_track_m, 2.0 / 0.0056 / 1000.0, 1e-12);
 }
 
 TEST(RobotModels, PeopleBotHasThirtyTwoSonars) {

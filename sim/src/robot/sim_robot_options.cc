@@ -12,10 +12,10 @@ namespace {
 // the experiment's robot.odometry block says otherwise (its keys win; `preset: ideal` too).
 void apply_drive_defaults(const mapper::RobotModel& model, const yaml::Node* odometry,
                           OdometryOptions& o) {
-  if (model.drive != mapper::DriveKind::kDifferential) return;
+  if (model.geometry.drive != mapper::DriveKind::kDifferential) return;
   auto unset = [&](const char* key) { return !odometry || !odometry->child(key); };
   if (!unset("preset")) return;
-  if (unset("track_m")) o.track_m = model.odometry_track_m;
+  if (unset("track_m")) o.track_m = model.geometry.odometry_track_m;
   if (unset("calibrated_track_factor")) o.calibrated_track_factor = 1.0;
   if (unset("effective_track_factor")) o.effective_track_factor = 1.0;
   if (unset("curvature_gain")) o.curvature_gain = 0.0;

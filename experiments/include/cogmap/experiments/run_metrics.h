@@ -56,6 +56,11 @@ struct RunMetrics {
   std::string grid;               ///< himm | mhimm | bayes | dempster_shafer
   std::string boundary;           ///< doorway | distance
   std::string localization_kind;  ///< em | none
+  /// The odometry recalibration the mapper used (mapper.odometry_curvature_gain, 0 for a
+  /// differential drive) and the robot's odometry track: scripts/fit-odometry-curvature adds its
+  /// fit to the gain the runs were made with.
+  double odometry_curvature_gain = 0.0;
+  double odometry_track_m = 0.0;
   std::size_t asr_count = 0;
   std::size_t frames = 0;
   std::optional<bool> route_completed;      ///< route controllers only

@@ -16,6 +16,7 @@
 #include "cogmap/mapper/grid/grid_updater.h"
 #include "cogmap/mapper/localization/glimpse_heading.h"
 #include "cogmap/mapper/localization/localizer.h"
+#include "cogmap/mapper/localization/odometry_recalibration.h"
 #include "cogmap/mapper/localization/wall_offsets.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
 #include "cogmap/mapper/seam/sensor_frame.h"
@@ -31,8 +32,11 @@ struct MapperOptions {
   DistanceOptions distance;
   LocalizationKind localization = LocalizationKind::kEm;
   LocalizerOptions localizer;
-  TranslationOptions translation;    ///< a room's shift from the offsets of walls seen before
-  GlimpseOptions glimpse;            ///< in-room heading correction by short glimpses
+  TranslationOptions translation;  ///< a room's shift from the offsets of walls seen before
+  GlimpseOptions glimpse;          ///< in-room heading correction by short glimpses
+  /// A skid-steer's odometry re-integrated with a curvature-dependent track before anything uses
+  /// it (curvature_gain 0, or a differential drive: as reported).
+  OdometryCalibration odometry_calibration;
   double min_room_duration_s = 2.0;  ///< boundaries closer in time than this are ignored
   /// A room whose path spans more than this (metres, either axis) ends there, as a distance cut
   /// would: it bounds a room grid to (extent + 2 x sonar range)^2, 210 m -> 4.4 M cells of 10 cm

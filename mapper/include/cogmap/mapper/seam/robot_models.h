@@ -12,21 +12,11 @@
 
 namespace cogmap::mapper {
 
-/// How the wheels turn the body.
-enum class DriveKind {
-  kSkidSteer,     ///< four wheels, turning skids (P2-AT, P3-AT): effective track > physical
-  kDifferential,  ///< two driven wheels and a caster (P3-DX, P2-DX, PeopleBot)
-};
-
 /// One robot model.
 struct RobotModel {
   std::string name;         ///< cogmap's name: "p2at", "p3dx", ...
   std::string aria_params;  ///< the ARIA parameter file the facts come from, e.g. "p3dx.p"
-  DriveKind drive = DriveKind::kSkidSteer;
-  /// The track odometry integrates with, metres: 2 / DiffConvFactor (ARIA's ratio of turn rate
-  /// to wheel speed, per mm), e.g. 0.0034 -> 0.588 m for the P2-AT.
-  double odometry_track_m = 0.588;
-  RobotGeometry geometry;
+  RobotGeometry geometry;   ///< with the drive and the odometry's track
 };
 
 /// Every model, in a fixed order: p2at, p2at8, p3at, p3dx, p2dx, p2de, peoplebot.

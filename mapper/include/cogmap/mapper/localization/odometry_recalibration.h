@@ -1,0 +1,58 @@
+#pragma once
+/// Re-integrates a skid-steer's odometry with a turn-curvature-dependent effective track.
+///
+/// A skid-steer base skids its wheels sideways to turn, so the track that turns wheel travel
+/// into heading is wider than the physical one, and by how much depends on how tightly it
+/// turns: a spin on the spot skids most, a gentle arc least (Mandow et al. 2007 measured the
+/// instantaneous centres of rotation of a Pioneer P3-AT moving with the curvature). The
+/// firmware converts with one track, calibrated on spins (ARIA's DiffConvFactor), so on arcs
+/// the odometry under- or over-reports every turn by a few per cent. The law assumed here:
+///
+///     B_eff = B_cal · (1 + g · (s − 1)),   s = |dr − dl| / (|dl| + |dr|)
+///
+/// with s the spin fraction of a frame's wheel travel (1 on the spot, 0 straight) and g the
+/// curvature gain. Each odometry increment's turn is then dθ · B_cal / B_eff. g is the robot's
+/// own constant, fitted from its runs by `scripts/fit-odometry-curvature` (EM's room
+/// measurements against the odometry's arc turning; docs/algorithms.md, "Odometry recalibrated
+/// for arcs"); g = 0 leaves the odometry exactly as reported.
+
+#include <optional>
+
+#include "cogmap/mapper/seam/pose2.h"
+
+namespace cogmap::mapper {
+
+struct OdometryCalibration {
+  /// g of a skid-steer robot (RobotGeometry::drive; a differential drive's wheels roll and its
+  /// odometry is taken as reported): the relative change of the effective track from a spin
+  /// (s = 1) to straight driving (s = 0); 0 = the odometry as the robot reports it. 0.066: fitted
+  /// by scripts/fit-odometry-curvature on the simulated P2-AT's runs in 160 generated buildings
+  /// (2 013 rooms, ± 0.007; docs/algorithms.md, "Odometry recalibrated for arcs"). Refit it for
+  /// a real robot from a few of its runs.
+  double curvature_gain = 0.0;
+};
+
+/// Spin fraction s of a motion of `forward_m` with a turn of `turn_rad` on a track of
+/// `track_m`: the wheels travel forward_m ∓ turn_rad·track_m/2. 0 for no motion at all.
+double spin_fraction(double forward_m, double turn_rad, double track_m);
+
+/// Feeds on the odometry poses as the robot reports them and returns them re-integrated.
+class OdometryRecalibrator {
+ public:
+  /// `track_m`: B_cal, the track the odometry converts wheel travel with
+  /// (RobotGeometry::odometry_track_m).
+  OdometryRecalibrator(double curvature_gain, double track_m)
+      : curvature_gain_(curvature_gain), track_m_(track_m) {}
+
+  /// The re-integrated pose for the reported `raw` pose (the first call returns `raw`). With
+  /// g = 0 every answer is `raw` itself.
+  Pose2 update(const Pose2& raw);
+
+ private:
+  double curvature_gain_;
+  double track_m_;
+  std::optional<Pose2> last_raw_;
+  Pose2 pose_;
+};
+
+}  // namespace cogmap::mapper
