@@ -364,9 +364,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       experiment.mapper.boundary == mapper::BoundaryKind::kDoorway ? "doorway" : "distance";
   m.localization_kind =
       experiment.mapper.localization == mapper::LocalizationKind::kEm ? "em" : "none";
-  m.odometry_curvature_gain = geometry.drive == mapper::DriveKind::kSkidSteer
-                                  ? experiment.mapper.odometry_calibration.curvature_gain
-                                  : 0.0;
+  m.odometry_curvature_gain =
+      mapper::applied_curvature_gain(experiment.mapper.odometry_calibration, geometry);
   m.odometry_track_m = geometry.odometry_track_m;
   m.frames = session.rows.size();
   m.route_completed = session.route_completed;

@@ -91,10 +91,7 @@ struct Mapper::Impl {
                                      : nullptr,
                 builder_with_range(opts.builder, geometry), opts.localizer,
                 opts.grid_options.cell_scale_mm / 2000.0),
-        // A differential drive's wheels roll: its odometry needs no re-integration for arcs.
-        recalibrator(geometry.drive == DriveKind::kSkidSteer
-                         ? opts.odometry_calibration.curvature_gain
-                         : 0.0,
+        recalibrator(applied_curvature_gain(opts.odometry_calibration, geometry),
                      geometry.odometry_track_m) {
     options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
   }

@@ -1,9 +1,14 @@
 #include "cogmap/mapper/localization/odometry_recalibration.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace cogmap::mapper {
+
+double applied_curvature_gain(const OdometryCalibration& calibration, const RobotGeometry& robot) {
+  return robot.drive == DriveKind::kSkidSteer ? calibration.curvature_gain : 0.0;
+}
 
 double spin_fraction(double forward_m, double turn_rad, double track_m) {
   const double half_turn_m = 0.5 * turn_rad * track_m;
@@ -32,7 +37,7 @@ Pose2 OdometryRecalibrator::update(const Pose2& raw) {
   const double forward_m = reverse ? -chord_m : chord_m;
   const double s = spin_fraction(forward_m, turn_rad, track_m_);
   const double scale = 1.0 + curvature_gain_ * (s - 1.0);
-  const double true_turn_rad = scale > 0.1 ? turn_rad / scale : turn_rad / 0.1;
+  const double true_turn_rad = turn_rad / std::max(scale, 0.1);  // no turn reversed by a wild g
   const double half = 0.5 * true_turn_rad;
   const Pose2 corrected{forward_m * std::cos(half), forward_m * std::sin(half), true_turn_rad};
   pose_ = pose_.compose(corrected);

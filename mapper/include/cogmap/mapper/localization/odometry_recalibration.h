@@ -2,11 +2,11 @@
 /// Re-integrates a skid-steer's odometry with a turn-curvature-dependent effective track.
 ///
 /// A skid-steer base skids its wheels sideways to turn, so the track that turns wheel travel
-/// into heading is wider than the physical one, and by how much depends on how tightly it
-/// turns: a spin on the spot skids most, a gentle arc least (Mandow et al. 2007 measured the
-/// instantaneous centres of rotation of a Pioneer P3-AT moving with the curvature). The
-/// firmware converts with one track, calibrated on spins (ARIA's DiffConvFactor), so on arcs
-/// the odometry under- or over-reports every turn by a few per cent. The law assumed here:
+/// into heading is wider than the physical one (kinematic models put the treads' instantaneous
+/// centres of rotation outside the wheels, e.g. Mandow et al. 2007 on a Pioneer P3-AT), and
+/// how much wider depends on how the robot moves: a spin on the spot skids most, a gentle arc
+/// least. The firmware converts with one track, calibrated on spins (ARIA's DiffConvFactor), so on
+/// arcs the odometry under- or over-reports every turn by a few per cent. The law assumed here:
 ///
 ///     B_eff = B_cal · (1 + g · (s − 1)),   s = |dr − dl| / (|dl| + |dr|)
 ///
@@ -19,18 +19,23 @@
 #include <optional>
 
 #include "cogmap/mapper/seam/pose2.h"
+#include "cogmap/mapper/seam/robot_geometry.h"
 
 namespace cogmap::mapper {
 
 struct OdometryCalibration {
   /// g of a skid-steer robot (RobotGeometry::drive; a differential drive's wheels roll and its
   /// odometry is taken as reported): the relative change of the effective track from a spin
-  /// (s = 1) to straight driving (s = 0); 0 = the odometry as the robot reports it. 0.066: fitted
-  /// by scripts/fit-odometry-curvature on the simulated P2-AT's runs in 160 generated buildings
-  /// (2 013 rooms, ± 0.007; docs/algorithms.md, "Odometry recalibrated for arcs"). Refit it for
-  /// a real robot from a few of its runs.
+  /// (s = 1) to straight driving (s = 0). Default 0: the odometry as the robot reports it. The
+  /// simulated P2-AT's, fitted by scripts/fit-odometry-curvature on its runs in 160 generated
+  /// buildings, is 0.066 ± 0.007 (2 013 rooms; docs/algorithms.md, "Odometry recalibrated for
+  /// arcs"); a real robot's is fitted the same way from a few hundred of its rooms.
   double curvature_gain = 0.0;
 };
+
+/// The gain the mapper applies on `robot`: the calibration's for a skid-steer, 0 for a
+/// differential drive (its wheels roll).
+double applied_curvature_gain(const OdometryCalibration& calibration, const RobotGeometry& robot);
 
 /// Spin fraction s of a motion of `forward_m` with a turn of `turn_rad` on a track of
 /// `track_m`: the wheels travel forward_m ∓ turn_rad·track_m/2. 0 for no motion at all.
