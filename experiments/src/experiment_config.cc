@@ -343,9 +343,10 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
   if (const auto c = root.child("controller")) e.controller = parse_controller(*c);
   if (const auto m = root.child("mapper")) e.mapper = parse_mapper_options(*m);
   if (const auto out = root.child("output")) {
-    out->expect_keys({"figures", "nav_trace"});
+    out->expect_keys({"figures", "nav_trace", "explore_map"});
     e.figures = out->get_or<bool>("figures", e.figures);
     e.nav_trace = out->get_or<bool>("nav_trace", e.nav_trace);
+    e.explore_map = out->get_or<bool>("explore_map", e.explore_map);
   }
   YAML::Emitter emitter;
   emitter << root.raw();

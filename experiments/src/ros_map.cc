@@ -28,17 +28,70 @@ std::string histogram_to_pgm(const mapper::HistogramGrid& grid, double occupied_
   return out;
 }
 
-std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string& image_name) {
+namespace {
+
+std::string map_server_yaml(const std::string& comment, const std::string& image_name,
+                            double resolution_m, double origin_x_m, double origin_y_m) {
   std::string out;
-  out += "# cogmap room grid; the origin is in the room's local (ASR) frame, metres\n";
+  out += "# " + comment + "\n";
   out += "image: " + image_name + "\n";
-  out += "resolution: " + format_double(geometry.cell_size_m()) + "\n";
-  out += "origin: [" + format_double(geometry.origin_x_m()) + ", " +
-         format_double(geometry.origin_y_m()) + ", 0.0]\n";
+  out += "resolution: " + format_double(resolution_m) + "\n";
+  out += "origin: [" + format_double(origin_x_m) + ", " + format_double(origin_y_m) + ", 0.0]\n";
   out += "negate: 0\n";
   out += "occupied_thresh: 0.65\n";
   out += "free_thresh: 0.196\n";
   return out;
+}
+
+}  // namespace
+
+std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string& image_name) {
+  return map_server_yaml("cogmap room grid; the origin is in the room's local (ASR) frame, metres",
+                         image_name, geometry.cell_size_m(), geometry.origin_x_m(),
+                         geometry.origin_y_m());
+}
+
+std::string explore_map_pgm(const mapper::nav::ExploreMapImage& image) {
+  using Image = mapper::nav::ExploreMapImage;
+  const int w = image.width, h = image.height;
+  std::string out = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+  const std::size_t header = out.size();
+  out.resize(header + static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  char* pixel = out.data() + header;
+  for (int y = h - 1; y >= 0; --y) {  // PGM rows top to bottom, map rows y upwards
+    for (int x = 0; x < w; ++x) {
+      unsigned char px = kPgmUnknown;
+      switch (image.cells[static_cast<std::size_t>(y) * w + x]) {
+        case Image::kFree:
+          px = kPgmFree;
+          break;
+        case Image::kObstacle:
+          px = kPgmOccupied;
+          break;
+        case Image::kFrontier:
+          px = kPgmFrontier;
+          break;
+        case Image::kBannedFrontier:
+          px = kPgmBannedFrontier;
+          break;
+        default:
+          break;
+      }
+      *pixel++ = static_cast<char>(px);
+    }
+  }
+  return out;
+}
+
+void write_explore_map(const mapper::nav::ExploreMapImage& image, const std::filesystem::path& dir,
+                       mapper::io::Durability durability) {
+  mapper::io::write_file_atomic(dir / "explore_map.pgm", explore_map_pgm(image), durability);
+  mapper::io::write_file_atomic(
+      dir / "explore_map.yaml",
+      map_server_yaml("cogmap explore map (the explorer's own, estimate frame, metres): 254 free, "
+                      "0 obstacle, 205 unseen, 160 frontier, 100 frontier given up",
+                      "explore_map.pgm", image.cell_m, image.origin_m.x(), image.origin_m.y()),
+      durability);
 }
 
 void write_ros_map(const mapper::HistogramGrid& grid, double occupied_threshold,

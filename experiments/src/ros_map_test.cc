@@ -52,5 +52,32 @@ TEST(RosMap, WritesBothFiles) {
   }
 }
 
+TEST(RosMap, ExploreMapPgmAndYaml) {
+  // 3 x 2 cells of 0.2 m at origin (-1, 2): row y = 0 unseen, free, obstacle; row y = 1
+  // frontier, given-up frontier, unseen.
+  using Image = mapper::nav::ExploreMapImage;
+  Image image;
+  image.width = 3;
+  image.height = 2;
+  image.cell_m = 0.2;
+  image.origin_m = {-1.0, 2.0};
+  image.cells = {Image::kUnseen,   Image::kFree,           Image::kObstacle,
+                 Image::kFrontier, Image::kBannedFrontier, Image::kUnseen};
+  const std::string expected = std::string("P5\n3 2\n255\n") +
+                               std::string{'\xa0', '\x64', '\xcd'} +  // y = 1: 160, 100, 205
+                               std::string{'\xcd', '\xfe', '\x00'};   // y = 0: 205, 254, 0
+  EXPECT_EQ(explore_map_pgm(image), expected);
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "explore_map_test";
+  write_explore_map(image, dir);
+  std::ifstream pgm(dir / "explore_map.pgm", std::ios::binary), yaml(dir / "explore_map.yaml");
+  std::stringstream p, y;
+  p << pgm.rdbuf();
+  y << yaml.rdbuf();
+  EXPECT_EQ(p.str(), expected);
+  EXPECT_NE(y.str().find("image: explore_map.pgm\nresolution: 0.2\norigin: [-1, 2, 0.0]\n"),
+            std::string::npos)
+      << y.str();
+}
+
 }  // namespace
 }  // namespace cogmap::experiments

@@ -26,7 +26,8 @@ bool is_run_product(const fs::directory_entry& entry) {
   if (entry.is_directory(ec)) return name == "asrs" || name == "figures";
   for (const char* known :
        {"metrics.json", "trajectory.csv", "map_segments.csv", "map_segments_odom.csv", "map.svg",
-        "asr_graph.json", "experiment.yaml", kRunMarkerName, kRunLockName}) {
+        "asr_graph.json", "experiment.yaml", "nav_trace.csv", "explore_map.pgm", "explore_map.yaml",
+        kRunMarkerName, kRunLockName}) {
     if (name == known) return true;
   }
   return std::regex_match(name, kGrid) || mapper::io::is_temp_file_name(name);

@@ -156,9 +156,9 @@ void clear_run_outputs(const fs::path& dir) {
   if (!fs::is_directory(dir, ec)) return;
   static const std::regex kGrid(R"(grid_\d{3,}\.(pgm|yaml))");
   static const std::regex kAsr(R"(\d{3,}\.json)");
-  for (const char* name :
-       {"metrics.json", "trajectory.csv", "map_segments.csv", "map_segments_odom.csv", "map.svg",
-        "asr_graph.json", "experiment.yaml"}) {
+  for (const char* name : {"metrics.json", "trajectory.csv", "map_segments.csv",
+                           "map_segments_odom.csv", "map.svg", "asr_graph.json", "experiment.yaml",
+                           "nav_trace.csv", "explore_map.pgm", "explore_map.yaml"}) {
     fs::remove(dir / name, ec);
   }
   for (const auto& e : fs::directory_iterator(dir, ec)) {
@@ -409,6 +409,11 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
               nav_trace_csv_chunks(session.nav_rows, emit);
             },
             durability);
+      }
+      if (experiment.explore_map) {
+        // The frontier explorer's map as it ended (other controllers have none).
+        if (const auto image = controller->explore_map())
+          write_explore_map(*image, out, durability);
       }
     });
 

@@ -124,6 +124,10 @@ class FrontierExplorer final : public Controller {
   bool done() const override { return finished_; }
   const NavTrace& trace() const override { return trace_; }
 
+  std::optional<ExploreMapImage> explore_map() const override {
+    return explore_map_image(map_, banned_, options_.ban_radius_m);
+  }
+
  private:
   /// The give-up clock restarts when the robot comes progress_m nearer its goal or the map
   /// gains progress_cells newly seen cells (travelling back through known rooms to a far

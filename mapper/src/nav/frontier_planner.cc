@@ -78,6 +78,43 @@ bool pinched(const ExploreMap& map, Cell c, double reach_m) {
 
 }  // namespace
 
+bool frontier_banned(const ExploreMap& map, Cell c, std::span<const BannedFrontier> banned,
+                     double banned_radius_m) {
+  const Point2 p = map.center_of(c);
+  return std::any_of(banned.begin(), banned.end(), [&](const BannedFrontier& b) {
+    if ((b.at - p).norm() > banned_radius_m) return false;
+    return !b.seen_from ||
+           (p - *b.seen_from).norm() <= (b.at - *b.seen_from).norm() + 0.5 * map.cell_m();
+  });
+}
+
+ExploreMapImage explore_map_image(const ExploreMap& map, std::span<const BannedFrontier> banned,
+                                  double banned_radius_m) {
+  ExploreMapImage image;
+  image.width = map.width();
+  image.height = map.height();
+  image.cell_m = map.cell_m();
+  image.origin_m = map.center_of({0, 0}) - Point2(0.5 * image.cell_m, 0.5 * image.cell_m);
+  image.cells.resize(static_cast<std::size_t>(image.width) * image.height);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const Cell c{x, y};
+      std::uint8_t& out = image.cells[map.index(c)];
+      if (!map.seen(c)) {
+        out = ExploreMapImage::kUnseen;
+      } else if (map.occupied(c)) {
+        out = ExploreMapImage::kObstacle;
+      } else if (!map.frontier(c)) {
+        out = ExploreMapImage::kFree;
+      } else {
+        out = frontier_banned(map, c, banned, banned_radius_m) ? ExploreMapImage::kBannedFrontier
+                                                               : ExploreMapImage::kFrontier;
+      }
+    }
+  }
+  return image;
+}
+
 std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2& from,
                                              std::span<const BannedFrontier> banned,
                                              double banned_radius_m, const FrontierOptions& o) {
@@ -93,14 +130,6 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   auto passable = [&](Cell c) {
     return map.seen(c) && !map.occupied(c) && clear[map.index(c)] >= o.hard_clearance_m;
   };
-  auto is_banned = [&](Cell c) {
-    const Point2 p = map.center_of(c);
-    return std::any_of(banned.begin(), banned.end(), [&](const BannedFrontier& b) {
-      if ((b.at - p).norm() > banned_radius_m) return false;
-      return !b.seen_from ||
-             (p - *b.seen_from).norm() <= (b.at - *b.seen_from).norm() + 0.5 * map.cell_m();
-    });
-  };
   // Frontier cells: passable, next to an unseen cell.
   std::vector<std::uint8_t> frontier(n, 0);
   for (int y = 0; y < h; ++y) {
@@ -109,7 +138,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
       if (!passable(c)) continue;
       bool edge = false;
       for (int k = 0; k < 4 && !edge; ++k) edge = !map.seen({x + kDx[k], y + kDy[k]});
-      if (edge && !is_banned(c)) frontier[map.index(c)] = 1;
+      if (edge && !frontier_banned(map, c, banned, banned_radius_m)) frontier[map.index(c)] = 1;
     }
   }
   // Clusters (8-connected); pieces too small to be more than a gap between beams are dropped.

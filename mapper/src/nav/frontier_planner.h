@@ -31,6 +31,16 @@ struct BannedFrontier {
   std::optional<Point2> seen_from;
 };
 
+/// Whether frontier cell `c` is given up: within `banned_radius_m` of a ban, and for a look's ban
+/// no farther from where it looked than the banned cell (+ half a cell).
+bool frontier_banned(const ExploreMap& map, ExploreMap::Cell c,
+                     std::span<const BannedFrontier> banned, double banned_radius_m);
+
+/// The map cell by cell as the planner sees it (output.explore_map): unseen, free, obstacle,
+/// frontier, or a frontier given up.
+ExploreMapImage explore_map_image(const ExploreMap& map, std::span<const BannedFrontier> banned,
+                                  double banned_radius_m);
+
 /// The plan to the cheapest reachable frontier cluster from `from` (its heading prices the
 /// first step's turn: turn_cost_m per radian), or nullopt when no
 /// frontier of min_frontier_cells is reachable. Frontier cells within `banned_radius_m` of a

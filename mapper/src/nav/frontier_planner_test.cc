@@ -389,5 +389,45 @@ TEST(FrontierPlanner, OpenFrontierBeforeOneThroughA06mDoorway) { expect_open_fro
 // pinch_m promises a doorway for gaps under 1.4 m; a 0.8 m door is the common case.
 TEST(FrontierPlanner, OpenFrontierBeforeOneThroughA08mDoorway) { expect_open_frontier_first(4); }
 
+TEST(ExploreMapImage, ClassifiesEveryCellAsThePlannerSeesIt) {
+  // A 5 x 5 free room walled round, with one wall cell left unseen: its inner neighbour is the
+  // only frontier.
+  Scene scene;
+  scene.add_free(0, 0, 4, 4);
+  scene.add_open(5, 2, 5, 2);
+  const ExploreMap map = scene.build();
+  auto cell = [&](const ExploreMapImage& image, Key k) {
+    return image.cells[map.index(map.cell_of(at(k)))];
+  };
+  const ExploreMapImage image = explore_map_image(map, {}, 0.6);
+  ASSERT_EQ(image.width, map.width());
+  ASSERT_EQ(image.height, map.height());
+  ASSERT_EQ(image.cells.size(), static_cast<std::size_t>(map.width() * map.height()));
+  EXPECT_DOUBLE_EQ(image.cell_m, kCellM);
+  EXPECT_NEAR(image.origin_m.x(), map.center_of({0, 0}).x() - 0.5 * kCellM, 1e-12);
+  EXPECT_NEAR(image.origin_m.y(), map.center_of({0, 0}).y() - 0.5 * kCellM, 1e-12);
+  EXPECT_EQ(cell(image, {2, 2}), ExploreMapImage::kFree);
+  EXPECT_EQ(cell(image, {4, 2}), ExploreMapImage::kFrontier);
+  EXPECT_EQ(cell(image, {5, 2}), ExploreMapImage::kUnseen);
+  EXPECT_EQ(cell(image, {5, 1}), ExploreMapImage::kObstacle);
+  EXPECT_EQ(cell(image, {-1, 3}), ExploreMapImage::kObstacle);
+  auto count = [](const ExploreMapImage& i, std::uint8_t v) {
+    return std::count(i.cells.begin(), i.cells.end(), v);
+  };
+  EXPECT_EQ(count(image, ExploreMapImage::kFrontier), 1);
+  EXPECT_EQ(count(image, ExploreMapImage::kObstacle), 19);  // 4 sides x 5, less the gap
+  EXPECT_EQ(count(image, ExploreMapImage::kFree), 24);
+  // A failed goal at the frontier gives it up; a ban 1 m away does not.
+  const BannedFrontier here{at({4, 2}), std::nullopt}, far{at({4, 2}) + Point2(0.0, 1.0), {}};
+  EXPECT_EQ(cell(explore_map_image(map, std::span(&here, 1), 0.6), {4, 2}),
+            ExploreMapImage::kBannedFrontier);
+  EXPECT_EQ(cell(explore_map_image(map, std::span(&far, 1), 0.6), {4, 2}),
+            ExploreMapImage::kFrontier);
+  // A look from inside the room bans the cells no farther than the frontier, not past it.
+  const BannedFrontier look{at({4, 2}), at({0, 2})};
+  EXPECT_EQ(cell(explore_map_image(map, std::span(&look, 1), 0.6), {4, 2}),
+            ExploreMapImage::kBannedFrontier);
+}
+
 }  // namespace
 }  // namespace cogmap::mapper::nav

@@ -79,6 +79,7 @@ struct Experiment {
   mapper::MapperOptions mapper;  ///< `mapper` block; sonar range is filled in by the runner
   bool figures = true;           ///< `output.figures`
   bool nav_trace = false;        ///< `output.nav_trace`: write nav_trace.csv (diagnostics)
+  bool explore_map = false;      ///< `output.explore_map`: the explorer's map (diagnostics)
   /// The document after every override, as YAML text (saved into the run directory so a run
   /// can be repeated exactly).
   std::string resolved_yaml;

@@ -7,6 +7,7 @@
 
 #include "cogmap/mapper/grid/grid.h"
 #include "cogmap/mapper/io/asr_json.h"
+#include "cogmap/mapper/nav/controller.h"
 
 namespace cogmap::experiments {
 
@@ -14,6 +15,9 @@ namespace cogmap::experiments {
 inline constexpr unsigned char kPgmFree = 254;
 inline constexpr unsigned char kPgmOccupied = 0;
 inline constexpr unsigned char kPgmUnknown = 205;
+/// The explore map's frontier and given-up frontier: map_server reads both as unknown.
+inline constexpr unsigned char kPgmFrontier = 160;
+inline constexpr unsigned char kPgmBannedFrontier = 100;
 
 /// The PGM (P5) image of a HIMM-scale grid: value > ε occupied, < 0 free (including the robot
 /// path), anything else (0 = unexplored, or weak evidence) unknown.
@@ -27,5 +31,14 @@ std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string
 void write_ros_map(const mapper::HistogramGrid& grid, double occupied_threshold,
                    const std::filesystem::path& dir, const std::string& stem,
                    mapper::io::Durability durability = mapper::io::Durability::kSynced);
+
+/// The explorer's own map as a PGM (P5), top row = largest y: 254 free, 0 obstacle, 205 unseen,
+/// 160 frontier, 100 a frontier given up.
+std::string explore_map_pgm(const mapper::nav::ExploreMapImage& image);
+
+/// Writes `<dir>/explore_map.pgm` and `<dir>/explore_map.yaml` (map_server YAML, origin in the
+/// estimate frame) atomically, fsynced per `durability`.
+void write_explore_map(const mapper::nav::ExploreMapImage& image, const std::filesystem::path& dir,
+                       mapper::io::Durability durability = mapper::io::Durability::kSynced);
 
 }  // namespace cogmap::experiments

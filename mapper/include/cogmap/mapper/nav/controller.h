@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "cogmap/mapper/grid/grid_updater.h"
@@ -73,6 +74,23 @@ struct NavTrace {
   std::vector<std::uint8_t> blocked;  ///< 1 for a blocked sector after thresholding
 };
 
+/// The frontier explorer's own map (estimate frame), one byte a cell: what it believed it had
+/// seen (`output.explore_map`, docs/formats.md). For finding out why an exploration stopped.
+struct ExploreMapImage {
+  enum Cell : std::uint8_t {
+    kUnseen = 0,
+    kFree = 1,            ///< seen and not an obstacle
+    kObstacle = 2,        ///< echoes outweigh the beams that swept it
+    kFrontier = 3,        ///< free, next to an unseen cell
+    kBannedFrontier = 4,  ///< a frontier cell given up (a failed goal, a look in vain)
+  };
+  int width = 0;
+  int height = 0;
+  double cell_m = 0.0;
+  Point2 origin_m{0.0, 0.0};        ///< estimate-frame position of cell (0, 0)'s outer corner
+  std::vector<std::uint8_t> cells;  ///< row-major from cell (0, 0), x east, y north
+};
+
 /// A navigation behaviour: one velocity command per sensor frame.
 class Controller {
  public:
@@ -83,6 +101,8 @@ class Controller {
   virtual bool done() const = 0;
   /// The last cycle's decisions (an empty trace for controllers without any).
   virtual const NavTrace& trace() const;
+  /// The explorer's map as it stands (frontier explorer; else none).
+  virtual std::optional<ExploreMapImage> explore_map() const { return std::nullopt; }
   /// Waypoints skipped because the robot stayed stuck on them (route follower; else 0).
   std::size_t skipped_waypoints() const { return trace().skipped_waypoints; }
 };
