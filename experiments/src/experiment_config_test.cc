@@ -150,6 +150,9 @@ TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {
   EXPECT_NE(e.resolved_yaml.find("cell_scale_mm: 85"), std::string::npos);
   EXPECT_TRUE(load_experiment(p, {"output.nav_trace=true"}).nav_trace);
   EXPECT_NE(error_of(p, {"output.nav_trace=sometimes"}), "no error");
+  EXPECT_FALSE(e.explore_map);  // the explorer's map: off unless asked for
+  EXPECT_TRUE(load_experiment(p, {"output.explore_map=true"}).explore_map);
+  EXPECT_NE(error_of(p, {"output.explore_map=7"}), "no error");
 }
 
 TEST(ExperimentConfig, DoorSearchIsTheControllersDefaultUnlessSet) {

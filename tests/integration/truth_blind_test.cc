@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/runner.h"
@@ -46,18 +47,21 @@ class ScrambledTruth final : public mapper::Robot {
   mapper::Robot& inner_;
 };
 
-/// Runs two_rooms for 60 s steering by `pose`; `scramble` wraps the robot.
-fs::path run(bool scramble, const std::string& pose = "estimate") {
+/// Runs `experiment` (two_rooms) for 60 s steering by `pose`; `scramble` wraps the robot.
+fs::path run(bool scramble, const std::string& pose = "estimate",
+             const std::string& experiment = "two_rooms", const std::string& extra = "") {
+  std::vector<std::string> overrides{"controller.pose=" + pose, "duration_s=60",
+                                     "output.figures=false"};
+  if (!extra.empty()) overrides.push_back(extra);
   const Experiment e =
-      load_experiment(source_dir() / "experiments" / "two_rooms.yaml",
-                      {"controller.pose=" + pose, "duration_s=60", "output.figures=false"});
+      load_experiment(source_dir() / "experiments" / (experiment + ".yaml"), overrides);
   sim::WorldSpec world = sim::load_world(e.world);
   sim::SimRobot sim(world, sim::parse_sim_robot_options(*e.robot), e.seed);
   ScrambledTruth scrambled(sim);
   const GroundTruth truth{sim::true_surfaces(world), world.start};
   RunOptions o;
-  o.out_dir =
-      fs::path(::testing::TempDir()) / ((scramble ? "truth_scrambled_" : "truth_plain_") + pose);
+  o.out_dir = fs::path(::testing::TempDir()) /
+              ((scramble ? "truth_scrambled_" : "truth_plain_") + experiment + "_" + pose);
   o.figures = false;
   fs::remove_all(o.out_dir);
   if (scramble) {
@@ -107,6 +111,19 @@ TEST(TruthBlind, ScramblingTheTruePoseChangesOnlyTruthMetrics) {
   }
   EXPECT_EQ(ma.dump(), mb.dump());
   EXPECT_GT(ma["nav"]["distance_m"].get<double>(), 5.0);  // it did drive
+}
+
+TEST(TruthBlind, TheExplorersOwnMapIgnoresTheTruth) {
+  const std::string map = "output.explore_map=true";
+  const fs::path a = run(false, "estimate", "explore_two_rooms", map);
+  const fs::path b = run(true, "estimate", "explore_two_rooms", map);
+  const std::string pgm = read_file(a / "explore_map.pgm");
+  EXPECT_EQ(pgm.rfind("P5\n", 0), 0u);
+  EXPECT_GT(pgm.size(), 1000u);  // a map of the first room at least
+  EXPECT_EQ(pgm, read_file(b / "explore_map.pgm"));
+  EXPECT_EQ(read_file(a / "explore_map.yaml"), read_file(b / "explore_map.yaml"));
+  // A route follower has no explore map: nothing is written for it.
+  EXPECT_FALSE(fs::exists(run(false, "estimate", "two_rooms", map) / "explore_map.pgm"));
 }
 
 TEST(TruthBlind, TheTestSeesALeak) {
