@@ -1,31 +1,37 @@
 #include "cogmap/experiments/ros_map.h"
 
+#include <cstdint>
+#include <iterator>
+
 #include "cogmap/experiments/number_format.h"
 #include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
 
-std::string histogram_to_pgm(const mapper::HistogramGrid& grid, double occupied_threshold) {
-  const int w = grid.width(), h = grid.height();
+namespace {
+
+/// A binary PGM (P5) of w x h pixels; `pixel_of(x, y)` gives the grey of map cell (x, y), whose
+/// rows run with y upwards, while PGM rows run top to bottom: the last row comes first.
+template <class PixelOf>
+std::string pgm_bottom_up(int w, int h, PixelOf pixel_of) {
   std::string out = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
   const std::size_t header = out.size();
   out.resize(header + static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
   char* pixel = out.data() + header;
-  // PGM rows run top to bottom; grid rows run with y upwards, so the last row comes first.
   for (int y = h - 1; y >= 0; --y) {
-    const float* cells = grid.row(y);
-    for (int x = 0; x < w; ++x) {
-      const float v = cells[x];
-      unsigned char px = kPgmUnknown;
-      if (v > occupied_threshold) {
-        px = kPgmOccupied;
-      } else if (v < 0.0f) {
-        px = kPgmFree;
-      }
-      *pixel++ = static_cast<char>(px);
-    }
+    for (int x = 0; x < w; ++x) *pixel++ = static_cast<char>(pixel_of(x, y));
   }
   return out;
+}
+
+}  // namespace
+
+std::string histogram_to_pgm(const mapper::HistogramGrid& grid, double occupied_threshold) {
+  return pgm_bottom_up(grid.width(), grid.height(), [&](int x, int y) {
+    const float v = grid.row(y)[x];
+    if (v > occupied_threshold) return kPgmOccupied;
+    return v < 0.0f ? kPgmFree : kPgmUnknown;
+  });
 }
 
 namespace {
@@ -52,35 +58,13 @@ std::string ros_map_yaml(const mapper::GridGeometry& geometry, const std::string
 }
 
 std::string explore_map_pgm(const mapper::nav::ExploreMapImage& image) {
-  using Image = mapper::nav::ExploreMapImage;
-  const int w = image.width, h = image.height;
-  std::string out = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
-  const std::size_t header = out.size();
-  out.resize(header + static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-  char* pixel = out.data() + header;
-  for (int y = h - 1; y >= 0; --y) {  // PGM rows top to bottom, map rows y upwards
-    for (int x = 0; x < w; ++x) {
-      unsigned char px = kPgmUnknown;
-      switch (image.cells[static_cast<std::size_t>(y) * w + x]) {
-        case Image::kFree:
-          px = kPgmFree;
-          break;
-        case Image::kObstacle:
-          px = kPgmOccupied;
-          break;
-        case Image::kFrontier:
-          px = kPgmFrontier;
-          break;
-        case Image::kBannedFrontier:
-          px = kPgmBannedFrontier;
-          break;
-        default:
-          break;
-      }
-      *pixel++ = static_cast<char>(px);
-    }
-  }
-  return out;
+  // Indexed by ExploreMapImage::Cell: unseen, free, obstacle, frontier, frontier given up.
+  constexpr unsigned char kGrey[] = {kPgmUnknown, kPgmFree, kPgmOccupied, kPgmFrontier,
+                                     kPgmBannedFrontier};
+  return pgm_bottom_up(image.width, image.height, [&](int x, int y) {
+    const std::uint8_t cell = image.cells[static_cast<std::size_t>(y) * image.width + x];
+    return cell < std::size(kGrey) ? kGrey[cell] : kPgmUnknown;
+  });
 }
 
 void write_explore_map(const mapper::nav::ExploreMapImage& image, const std::filesystem::path& dir,
