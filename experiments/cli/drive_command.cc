@@ -118,6 +118,7 @@ int drive(const DriveArgs& args) {
     experiment.controller.type = experiments::ControllerKind::kExplore;
   if (args.controller == "route") experiment.controller.type = experiments::ControllerKind::kRoute;
   if (args.controller == "idle") experiment.controller.type = experiments::ControllerKind::kNone;
+  experiments::apply_controller_defaults(experiment);  // what follows the controller type
   if (experiment.controller.type == experiments::ControllerKind::kRoute &&
       experiment.controller.waypoints.empty()) {
     std::cerr << "cogmap drive: --controller route needs waypoints (controller.waypoints in "

@@ -175,6 +175,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "min_room_travel_m",
                      "min_room_duration_s",
                      "max_room_extent_m",
+                     "max_room_travel_m",
                      "max_correction_deg",
                      "no_echo_clear_m",
                      "hit_increment",
@@ -251,6 +252,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "min_room_travel_m", 0.0, 1000.0, o.doorway.min_room_travel_m);
   o.min_room_duration_s = number_in(block, "min_room_duration_s", 0.0, 1e6, o.min_room_duration_s);
   o.max_room_extent_m = number_in(block, "max_room_extent_m", 1.0, 2000.0, o.max_room_extent_m);
+  o.max_room_travel_m = number_in(block, "max_room_travel_m", 0.0, 1e6, o.max_room_travel_m);
   o.localizer.odometry_prior = block.get_or<bool>("em_odometry_prior", o.localizer.odometry_prior);
   o.localizer.prior_shrinks = block.get_or<bool>("em_prior_shrinks", o.localizer.prior_shrinks);
   if (const auto r = block.child("em_reference_rooms")) {
@@ -341,7 +343,11 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
     e.robot = *robot;
   }
   if (const auto c = root.child("controller")) e.controller = parse_controller(*c);
-  if (const auto m = root.child("mapper")) e.mapper = parse_mapper_options(*m);
+  if (const auto m = root.child("mapper")) {
+    e.mapper = parse_mapper_options(*m);
+    e.room_travel_given = m->child("max_room_travel_m").has_value();
+  }
+  apply_controller_defaults(e);
   if (const auto out = root.child("output")) {
     out->expect_keys({"figures", "nav_trace", "explore_map"});
     e.figures = out->get_or<bool>("figures", e.figures);
@@ -352,6 +358,13 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
   emitter << root.raw();
   e.resolved_yaml = std::string(emitter.c_str()) + "\n";
   return e;
+}
+
+void apply_controller_defaults(Experiment& e) {
+  if (!e.room_travel_given) {
+    e.mapper.max_room_travel_m =
+        e.controller.type == ControllerKind::kExplore ? kExploreMaxRoomTravelM : 0.0;
+  }
 }
 
 namespace {

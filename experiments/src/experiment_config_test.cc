@@ -136,6 +136,37 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NE(error_of(p, {"mapper.odometry_curvature_gain=0.6"}).find("[-0.5, 0.5]"),
             std::string::npos);
   EXPECT_NE(error_of(p, {"mapper.odometry_curvature_gain=nan"}), "no error");
+  // Long rooms: a route keeps the thesis's rule (0), an explorer cuts at 4.5 m, unless the
+  // experiment says otherwise.
+  EXPECT_EQ(defaults.mapper.max_room_travel_m, 0.0);
+  EXPECT_EQ(load_experiment(p, {"mapper.max_room_travel_m=3"}).mapper.max_room_travel_m, 3.0);
+  EXPECT_NE(error_of(p, {"mapper.max_room_travel_m=-1"}).find("max_room_travel_m"),
+            std::string::npos);
+  EXPECT_NE(error_of(p, {"mapper.max_room_travel_m=nan"}), "no error");
+}
+
+TEST(ExperimentConfig, AnExplorerCutsLongRoomsUnlessTheExperimentSaysOtherwise) {
+  const fs::path p = write_temp("explore_cut.yaml", R"(name: explore
+world: ../worlds/two_rooms.yaml
+duration_s: 600
+controller:
+  type: explore
+mapper:
+  grid: mhimm
+)");
+  Experiment e = load_experiment(p);
+  EXPECT_EQ(e.mapper.max_room_travel_m, kExploreMaxRoomTravelM);
+  EXPECT_EQ(kExploreMaxRoomTravelM, 4.5);  // the thesis's hallway cut, §3.1.2
+  EXPECT_EQ(load_experiment(p, {"mapper.max_room_travel_m=0"}).mapper.max_room_travel_m, 0.0);
+  // cogmap drive --controller changes the type after loading: the default follows it.
+  e.controller.type = ControllerKind::kRoute;
+  apply_controller_defaults(e);
+  EXPECT_EQ(e.mapper.max_room_travel_m, 0.0);
+  Experiment given =
+      load_experiment(write_temp("route_cut.yaml", kGood), {"mapper.max_room_travel_m=6"});
+  given.controller.type = ControllerKind::kExplore;
+  apply_controller_defaults(given);
+  EXPECT_EQ(given.mapper.max_room_travel_m, 6.0);
 }
 
 TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {

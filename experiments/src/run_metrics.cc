@@ -111,7 +111,8 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"asr_boundary", m.boundary},
                      {"localization", m.localization_kind},
                      {"odometry_curvature_gain", m.odometry_curvature_gain},
-                     {"odometry_track_m", m.odometry_track_m}};
+                     {"odometry_track_m", m.odometry_track_m},
+                     {"max_room_travel_m", m.max_room_travel_m}};
   j["asr_count"] = m.asr_count;
   j["frames"] = m.frames;
   if (m.route_completed) j["route_completed"] = *m.route_completed;

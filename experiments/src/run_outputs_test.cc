@@ -112,7 +112,9 @@ TEST(RunMetrics, JsonHasTheRequiredKeysAndOmitsTruthMetricsWithoutTruth) {
   m.memory.compression_ratio = 0.04;
   m.sim_time_s = 10.0;
   m.wall_time_s = 0.5;
+  m.max_room_travel_m = 4.5;
   const std::string without = metrics_json_text(m);
+  EXPECT_NE(without.find("\"max_room_travel_m\": 4.5"), std::string::npos) << without;
   EXPECT_EQ(without.find("wall_error_median_m"), std::string::npos);
   EXPECT_EQ(without.find("\"localization\": {"), std::string::npos);
   EXPECT_NE(without.find("\"real_time_factor\": 20.0"), std::string::npos) << without;

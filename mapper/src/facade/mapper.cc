@@ -71,6 +71,8 @@ struct Mapper::Impl {
   double last_time_s = 0.0;
   bool started = false;
   Point2 room_lo{0.0, 0.0}, room_hi{0.0, 0.0};  // bounding box of the path in the current room
+  double room_travel_m = 0.0;                   // path length of the estimate in the current room
+  Point2 room_last_point{0.0, 0.0};
   int next_id = 0;
 
   Impl(const MapperOptions& opts, const RobotGeometry& geometry, AsrStore& asr_store,
@@ -331,7 +333,8 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
     // Room 0 is entered at the known start pose.
     m.room.start(m.next_id++, frame.time_s, pose, Exit{pose.translation(), 0.0, pose.theta_rad, {}},
                  std::nullopt);
-    m.room_lo = m.room_hi = pose.translation();
+    m.room_lo = m.room_hi = m.room_last_point = pose.translation();
+    m.room_travel_m = 0.0;
     m.started = true;
     if (m.options.glimpse.enabled) m.glimpse.begin(pose);
   }
@@ -344,10 +347,16 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   }
   m.room_lo = m.room_lo.cwiseMin(pose.translation());
   m.room_hi = m.room_hi.cwiseMax(pose.translation());
+  m.room_travel_m += (pose.translation() - m.room_last_point).norm();
+  m.room_last_point = pose.translation();
 
   std::optional<int> finished;
   std::optional<BoundaryEvent> event = m.boundary->update(frame, pose);
-  if (!event && (m.room_hi - m.room_lo).maxCoeff() > m.options.max_room_extent_m) {
+  // Distance cuts are this rule already (at their own length, asr_distance_m).
+  const bool too_long = m.options.boundary == BoundaryKind::kDoorway &&
+                        m.options.max_room_travel_m > 0.0 &&
+                        m.room_travel_m >= m.options.max_room_travel_m;
+  if (!event && (too_long || (m.room_hi - m.room_lo).maxCoeff() > m.options.max_room_extent_m)) {
     event = BoundaryEvent{frame.time_s, pose.translation(), 0.0, pose.theta_rad};
   }
   if (event && frame.time_s - m.room.start_time_s() >= m.options.min_room_duration_s) {
@@ -360,7 +369,8 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
                      wrap_angle_rad(event->heading_rad + fix.theta_rad),
                      {}};
     m.room.start(m.next_id++, frame.time_s, pose, entry, finished);
-    m.room_lo = m.room_hi = pose.translation();
+    m.room_lo = m.room_hi = m.room_last_point = pose.translation();
+    m.room_travel_m = 0.0;
     if (m.options.glimpse.enabled) {
       // The finished room's walls are the reference now; its glimpses were part of it.
       m.glimpse_walls.clear();

@@ -326,6 +326,41 @@ TEST(Mapper, ARoomLargerThanTheExtentLimitEnds) {
   EXPECT_LT(small_peak, default_peak);
 }
 
+TEST(Mapper, ARoomToursLongerThanTheTravelLimitAreCut) {
+  const RobotGeometry robot = p2at_geometry();
+  // A 6 x 5 m room without a door toured one and a half times at 1 m from its walls: 21 m of
+  // path in 0.05 m steps, never more than 4 m from the start. The doorway detector never fires
+  // (the sides are 0.86 m away or more) and the extent limit is far off, so only the travel
+  // limit can end a room: cuts at 4.5, 9.0, 13.5 and 18.0 m (the first frame at or past each
+  // 4.5 m of path since the last cut) give five rooms, the last one 3 m long.
+  const auto walls = rectangle(0.0, 0.0, 6.0, 5.0);
+  const auto frames =
+      drive({{1.0, 1.0}, {5.0, 1.0}, {5.0, 4.0}, {1.0, 4.0}, {1.0, 1.0}, {5.0, 1.0}, {5.0, 4.0}},
+            walls, robot, 0.0);
+  auto room_starts = [&](double limit_m) {
+    MapperOptions options;
+    options.max_room_travel_m = limit_m;
+    MemoryAsrStore store;
+    Mapper mapper(options, robot, store, Pose2{});
+    std::vector<double> starts{frames.front().time_s};
+    for (const SensorFrame& f : frames) {
+      if (mapper.process(f)) starts.push_back(f.time_s);
+    }
+    mapper.finish();
+    EXPECT_EQ(store.ids().size(), starts.size());
+    return starts;
+  };
+  EXPECT_EQ(room_starts(0.0).size(), 1u);  // off: one room, as the thesis's doorway rule says
+  const std::vector<double> cut = room_starts(4.5);
+  ASSERT_EQ(cut.size(), 5u);
+  // 4.5 m of path is 90 steps of 0.1 s; the first room starts at the first frame (0.1 s).
+  for (std::size_t i = 1; i < cut.size(); ++i) EXPECT_NEAR(cut[i] - cut[i - 1], 9.0, 0.15);
+}
+
+TEST(Mapper, RoomsEndOnlyAtDoorwaysByDefault) {
+  EXPECT_EQ(MapperOptions{}.max_room_travel_m, 0.0);  // the thesis's rule (§3.1.2)
+}
+
 TEST(Mapper, OdometryIsReportedAsItCameByDefault) {
   EXPECT_EQ(MapperOptions{}.odometry_calibration.curvature_gain, 0.0);
 }

@@ -77,9 +77,12 @@ struct Experiment {
   std::optional<yaml::Node> robot;
   ControllerConfig controller;
   mapper::MapperOptions mapper;  ///< `mapper` block; sonar range is filled in by the runner
-  bool figures = true;           ///< `output.figures`
-  bool nav_trace = false;        ///< `output.nav_trace`: write nav_trace.csv (diagnostics)
-  bool explore_map = false;      ///< `output.explore_map`: the explorer's map (diagnostics)
+  /// `mapper.max_room_travel_m` was given: else it follows the controller
+  /// (apply_controller_defaults).
+  bool room_travel_given = false;
+  bool figures = true;       ///< `output.figures`
+  bool nav_trace = false;    ///< `output.nav_trace`: write nav_trace.csv (diagnostics)
+  bool explore_map = false;  ///< `output.explore_map`: the explorer's map (diagnostics)
   /// The document after every override, as YAML text (saved into the run directory so a run
   /// can be repeated exactly).
   std::string resolved_yaml;
@@ -105,6 +108,17 @@ Experiment parse_experiment(const yaml::Node& root, const std::filesystem::path&
 /// The message of a ConfigError without its "file:line: key: " prefix (for re-raising it
 /// with more context).
 std::string bare_message(const yaml::ConfigError& error);
+
+/// The explorer's `mapper.max_room_travel_m` when the experiment gives none: the thesis's
+/// hallway cut (§3.1.2). An exploration tours each room for minutes and the cut halved its
+/// corrected heading error; routes cross a room once and keep the thesis's one ASR per room
+/// (docs/algorithms.md, "Long rooms cut").
+inline constexpr double kExploreMaxRoomTravelM = 4.5;
+
+/// Sets what depends on the controller and was not given: `mapper.max_room_travel_m`
+/// (kExploreMaxRoomTravelM for an explorer, 0 otherwise). load_experiment calls it; call it
+/// again after changing `controller.type` (cogmap drive --controller).
+void apply_controller_defaults(Experiment& e);
 
 /// Parses the `mapper` block into MapperOptions (defaults: thesis Table 4.1).
 mapper::MapperOptions parse_mapper_options(const yaml::Node& block);

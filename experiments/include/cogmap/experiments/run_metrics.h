@@ -61,6 +61,7 @@ struct RunMetrics {
   /// fit to the gain the runs were made with.
   double odometry_curvature_gain = 0.0;
   double odometry_track_m = 0.0;
+  double max_room_travel_m = 0.0;  ///< the long-room cut the mapper used (0: doorways only)
   std::size_t asr_count = 0;
   std::size_t frames = 0;
   std::optional<bool> route_completed;      ///< route controllers only

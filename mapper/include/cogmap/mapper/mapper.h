@@ -43,6 +43,13 @@ struct MapperOptions {
   /// (18 MB), however long a doorway-less corridor or a broken odometry runs. The thesis's
   /// rooms and hallway cuts are under 80 m.
   double max_room_extent_m = 200.0;
+  /// A room whose path (the estimate's, metres) grows longer than this ends there, as the
+  /// thesis cuts its hallways every 4.5 m (§3.1.2), so that EM corrects a room toured for
+  /// minutes before its drift smears it (ours; docs/algorithms.md, "Long rooms cut"). 0 (the
+  /// thesis's rule): rooms end only at doorways (and at max_room_extent_m). Experiments that
+  /// explore default to 4.5 m (kExploreMaxRoomTravelM). With BoundaryKind::kDistance the cut is
+  /// the boundary itself and this adds nothing.
+  double max_room_travel_m = 0.0;
 };
 
 /// Counters for the run report.
