@@ -367,9 +367,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.odometry_curvature_gain =
       mapper::applied_curvature_gain(experiment.mapper.odometry_calibration, geometry);
   m.odometry_track_m = geometry.odometry_track_m;
-  m.max_room_travel_m = experiment.mapper.boundary == mapper::BoundaryKind::kDoorway
-                            ? experiment.mapper.max_room_travel_m
-                            : 0.0;  // distance cuts are their own
+  m.max_room_travel_m = mapper::applied_max_room_travel_m(experiment.mapper);
   m.frames = session.rows.size();
   m.route_completed = session.route_completed;
   m.nav = nav_metrics(*controller, experiment.controller, session, stalled_s);

@@ -352,10 +352,8 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
 
   std::optional<int> finished;
   std::optional<BoundaryEvent> event = m.boundary->update(frame, pose);
-  // Distance cuts are this rule already (at their own length, asr_distance_m).
-  const bool too_long = m.options.boundary == BoundaryKind::kDoorway &&
-                        m.options.max_room_travel_m > 0.0 &&
-                        m.room_travel_m >= m.options.max_room_travel_m;
+  const double travel_limit_m = applied_max_room_travel_m(m.options);
+  const bool too_long = travel_limit_m > 0.0 && m.room_travel_m >= travel_limit_m;
   if (!event && (too_long || (m.room_hi - m.room_lo).maxCoeff() > m.options.max_room_extent_m)) {
     event = BoundaryEvent{frame.time_s, pose.translation(), 0.0, pose.theta_rad};
   }

@@ -355,6 +355,18 @@ TEST(Mapper, ARoomToursLongerThanTheTravelLimitAreCut) {
   ASSERT_EQ(cut.size(), 5u);
   // 4.5 m of path is 90 steps of 0.1 s; the first room starts at the first frame (0.1 s).
   for (std::size_t i = 1; i < cut.size(); ++i) EXPECT_NEAR(cut[i] - cut[i - 1], 9.0, 0.15);
+  // With distance cuts the boundary is that rule already, at its own length: 6 m cuts at 6, 12
+  // and 18 m make four rooms, whatever max_room_travel_m says.
+  MapperOptions distance;
+  distance.boundary = BoundaryKind::kDistance;
+  distance.distance.asr_distance_m = 6.0;
+  distance.max_room_travel_m = 4.5;
+  EXPECT_EQ(applied_max_room_travel_m(distance), 0.0);
+  MemoryAsrStore store;
+  Mapper mapper(distance, robot, store, Pose2{});
+  for (const SensorFrame& f : frames) mapper.process(f);
+  mapper.finish();
+  EXPECT_EQ(store.ids().size(), 4u);
 }
 
 TEST(Mapper, RoomsEndOnlyAtDoorwaysByDefault) {

@@ -52,6 +52,12 @@ struct MapperOptions {
   double max_room_travel_m = 0.0;
 };
 
+/// The path length after which the mapper cuts a room (0: never): max_room_travel_m with the
+/// doorway rule; with distance cuts the boundary is that rule already, at its own length.
+inline double applied_max_room_travel_m(const MapperOptions& options) {
+  return options.boundary == BoundaryKind::kDoorway ? options.max_room_travel_m : 0.0;
+}
+
 /// Counters for the run report.
 struct MapperStats {
   std::size_t frames = 0;
