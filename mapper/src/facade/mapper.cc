@@ -73,6 +73,12 @@ struct Mapper::Impl {
   Point2 room_lo{0.0, 0.0}, room_hi{0.0, 0.0};  // bounding box of the path in the current room
   double room_travel_m = 0.0;                   // path length of the estimate in the current room
   Point2 room_last_point{0.0, 0.0};
+
+  /// The current room's path starts over at `p` (room 0, and every room after a boundary).
+  void restart_room_path(const Point2& p) {
+    room_lo = room_hi = room_last_point = p;
+    room_travel_m = 0.0;
+  }
   int next_id = 0;
 
   Impl(const MapperOptions& opts, const RobotGeometry& geometry, AsrStore& asr_store,
@@ -333,8 +339,7 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
     // Room 0 is entered at the known start pose.
     m.room.start(m.next_id++, frame.time_s, pose, Exit{pose.translation(), 0.0, pose.theta_rad, {}},
                  std::nullopt);
-    m.room_lo = m.room_hi = m.room_last_point = pose.translation();
-    m.room_travel_m = 0.0;
+    m.restart_room_path(pose.translation());
     m.started = true;
     if (m.options.glimpse.enabled) m.glimpse.begin(pose);
   }
@@ -367,8 +372,7 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
                      wrap_angle_rad(event->heading_rad + fix.theta_rad),
                      {}};
     m.room.start(m.next_id++, frame.time_s, pose, entry, finished);
-    m.room_lo = m.room_hi = m.room_last_point = pose.translation();
-    m.room_travel_m = 0.0;
+    m.restart_room_path(pose.translation());
     if (m.options.glimpse.enabled) {
       // The finished room's walls are the reference now; its glimpses were part of it.
       m.glimpse_walls.clear();
