@@ -95,6 +95,31 @@ TEST(FindOpeningRules, RefusesAGapNarrowerThanMinWidth) {
   expect_opening(find(narrow, Point2(4.0, 0.0), small), 0.0, 0.6);
 }
 
+// A wall along x = 1.2 seen from the origin with a 1 m gap whose centre is 45° or 55° off the
+// wall's normal: the echoes of a wall met that obliquely are painted off its line, so only the
+// first is trusted as a door (max_view_incidence_deg 50°).
+TEST(FindOpeningRules, TrustsOnlyAnOpeningSeenNearItsAxis) {
+  const auto oblique_wall = [](int lo_dm, int hi_dm) {
+    std::vector<ObstaclePoint> out;
+    for (int k = -10; k <= 40; ++k) {
+      if (k > lo_dm && k < hi_dm) continue;
+      out.push_back({Point2(1.2, k / 10.0), 15.0f});
+    }
+    return out;
+  };
+  const auto at_45 = find(oblique_wall(7, 17), Point2(2.2, 1.2));  // centre (1.2, 1.2): 45.0°
+  ASSERT_TRUE(at_45.has_value());
+  EXPECT_NEAR(at_45->center_m.x(), 1.2, 1e-9);
+  EXPECT_NEAR(at_45->center_m.y(), 1.2, 1e-9);
+  const auto gap_at_55 = oblique_wall(12, 22);  // centre (1.2, 1.7): 54.8° off the normal
+  EXPECT_FALSE(find(gap_at_55, Point2(2.2, 1.7)));
+  DoorOptions trusting;
+  trusting.max_view_incidence_deg = 60.0;
+  const auto at_55 = find(gap_at_55, Point2(2.2, 1.7), trusting);
+  ASSERT_TRUE(at_55.has_value());
+  EXPECT_NEAR(at_55->center_m.y(), 1.7, 1e-9);
+}
+
 TEST(FindOpeningRules, AClosedDoorHasNoOpening) {
   EXPECT_FALSE(find(wall(0, 0), Point2(4.0, 0.0)));
   EXPECT_FALSE(find(wall(0, 0), Point2(kWallX, 0.0)));

@@ -133,6 +133,11 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
         if (scan[k] && n.dot(*scan[k] - center) < o.depth_m) clear = false;
       }
       if (!clear || !supported(a, b) || !supported(b, a)) continue;
+      // Seen too far off its axis, a wall's echoes are painted off its line: no door is known.
+      if (wall_normal(scan, center, n, width, o).dot(center.normalized()) <
+          std::cos(o.max_view_incidence_deg * kPi / 180.0)) {
+        continue;
+      }
       // The goal must be beyond the opening (or about in it: a waypoint at a door centre).
       const double goal_beyond = n.dot(goal_off - center);
       if (goal_beyond < -o.approach_m) continue;

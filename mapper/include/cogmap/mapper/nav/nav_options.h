@@ -148,10 +148,17 @@ struct DoorOptions {
   double rejected_keep_s = 30.0;     ///< a closed or abandoned opening is not retried this long
   double max_axis_angle_deg = 60.0;  ///< an opening's axis may lie this far off the direction
                                      ///< to the goal (a door 0.5 m aside from 1 m: 27°)
-  double goal_in_door_m = 0.8;       ///< a goal within approach_m of an opening's line must lie
-                                     ///< this near its centre (0.5 m drift + half a 0.6 m door)
-  double wall_fit_m = 1.0;           ///< the opening's axis is fitted to the wall this far beyond
-                                     ///< each jamb (0 = the jamb line alone)
+  /// An opening counts only when seen within this of its axis. Every echo is painted on its
+  /// beam's axis at the range of the beam's nearest ray: a wall seen at incidence θ from d
+  /// metres is painted d·(1/cos θ − 1/cos(θ − 12°)) in front of itself (12°: the two-way beam's
+  /// 2σ), 0.29 m at 50° from 1 m, the opening's depth_m. Beyond that a wall seen obliquely
+  /// shows gaps and "jambs" where there is no door (docs/algorithms.md, "Door passage", 7).
+  /// 90 = no test.
+  double max_view_incidence_deg = 50.0;
+  double goal_in_door_m = 0.8;  ///< a goal within approach_m of an opening's line must lie
+                                ///< this near its centre (0.5 m drift + half a 0.6 m door)
+  double wall_fit_m = 1.0;      ///< the opening's axis is fitted to the wall this far beyond
+                                ///< each jamb (0 = the jamb line alone)
   /// Probing: the P2-AT has no 0° transducer, and from farther than ~1 m its ±10° beams
   /// reach a 1 m door's jambs (10-20° off their axes) and paint them inside the opening. So
   /// a waypoint within probe_range_m behind a sensed wall is approached head-on at the door
