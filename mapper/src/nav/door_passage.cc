@@ -133,11 +133,6 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
         if (scan[k] && n.dot(*scan[k] - center) < o.depth_m) clear = false;
       }
       if (!clear || !supported(a, b) || !supported(b, a)) continue;
-      // Seen too far off its axis, a wall's echoes are painted off its line: no door is known.
-      if (wall_normal(scan, center, n, width, o).dot(center.normalized()) <
-          std::cos(o.max_view_incidence_deg * kPi / 180.0)) {
-        continue;
-      }
       // The goal must be beyond the opening (or about in it: a waypoint at a door centre).
       const double goal_beyond = n.dot(goal_off - center);
       if (goal_beyond < -o.approach_m) continue;
@@ -146,6 +141,11 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
       if (goal_beyond < o.approach_m && (goal_off - center).norm() > o.goal_in_door_m) continue;
       const double offset = std::abs(cross(g, center));  // from the goal line
       if (offset > o.max_offset_m) continue;
+      // Seen too far off its axis, a wall's echoes are painted off its line: no door is known.
+      const Point2 axis = wall_normal(scan, center, n, width, o);
+      if (axis.dot(center.normalized()) < std::cos(o.max_view_incidence_deg * kPi / 180.0)) {
+        continue;
+      }
       // Something sensed in the body's lane within beyond_clear_m beyond the gap: a pocket
       // (furniture beside a wall), where the crossing could not end with room to turn.
       const Beyond beyond = lane_beyond(scan, center, n, o);
@@ -168,7 +168,7 @@ std::optional<Opening> find_opening(const std::vector<ObstaclePoint>& obstacles,
       const double cost = offset + 0.1 * center.norm();
       if (cost < best_cost) {
         best_cost = cost;
-        best = Opening{robot_m + center, wall_normal(scan, center, n, width, o), width};
+        best = Opening{robot_m + center, axis, width};
       }
     }
   }
