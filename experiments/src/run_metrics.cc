@@ -160,6 +160,7 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"beyond_max", m.rejected.beyond_max},
                      {"unknown_sonar", m.rejected.unknown_sonar},
                      {"total", m.rejected.total()}}}};
+  j["door_fixes"] = {{"count", m.door_fixes}, {"total_m", m.door_fix_total_m}};
   Json rooms = Json::array();
   for (const RoomReport& r : m.rooms) {
     Json localization(nullptr);

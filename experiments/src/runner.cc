@@ -380,6 +380,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   const mapper::MapperStats& stats = mapper.stats();
   m.readings_used = stats.readings_used;
   m.rejected = stats.rejected;
+  m.door_fixes = stats.door_fixes;
+  m.door_fix_total_m = stats.door_fix_abs_m;
   m.build_time_s = stats.build_time_s;
   m.localization_time_s = stats.localization_time_s;
   m.room_cpu_s = room_cpu_s;

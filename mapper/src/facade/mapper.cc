@@ -46,6 +46,7 @@ struct Mapper::Impl {
   std::unique_ptr<AsrBoundaryDetector> boundary;
   Localizer localizer;
   GlimpseHeading glimpse;
+  DoorMemory doors;  ///< doorways passed so far (options.door_fix)
   /// This room's earlier glimpses' walls (world, corrected): EM reference besides `resident`.
   std::deque<std::vector<Polyline>> glimpse_walls;
   /// Variance of the heading error left after the last glimpse or room correction, rad².
@@ -72,6 +73,7 @@ struct Mapper::Impl {
   bool started = false;
   Point2 room_lo{0.0, 0.0}, room_hi{0.0, 0.0};  // bounding box of the path in the current room
   double room_travel_m = 0.0;                   // path length of the estimate in the current room
+  double travel_m = 0.0;  // path length of the estimate since the start (door fixes' clock)
   Point2 room_last_point{0.0, 0.0};
 
   /// The current room's path starts over at `p` (room 0, and every room after a boundary).
@@ -99,6 +101,7 @@ struct Mapper::Impl {
                                      : nullptr,
                 builder_with_range(opts.builder, geometry), opts.localizer,
                 opts.grid_options.cell_scale_mm / 2000.0),
+        doors(opts.door_fix),
         recalibrator(applied_curvature_gain(opts.odometry_calibration, geometry),
                      geometry.odometry_track_m) {
     options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
@@ -130,6 +133,10 @@ struct Mapper::Impl {
   void finish_glimpse(const Pose2& pose);
 
   std::optional<int> finish_room(double time_s, const std::optional<BoundaryEvent>& leaving);
+  /// A doorway passed (the entry of the room just begun, corrected estimate frame): with
+  /// options.door_fix, the shift that puts it back where the same door was first passed, applied
+  /// to the estimate from now on (zero for a new door).
+  Point2 fix_at_door(const Exit& entry);
   Localization localize(const Asr& asr, const AsrTrace& trace) const;
   /// The shift of a room (after EM's rotation `rotated`) from its walls' offsets against the
   /// reference rooms' (options.translation); records it in `localized`.
@@ -225,6 +232,16 @@ Pose2 Mapper::Impl::translate(const Asr& asr, const AsrTrace& trace, const Pose2
   ++stats.translations;
   stats.translation_abs_m += fix.shift.norm();
   return Pose2{fix.shift.x(), fix.shift.y(), 0.0}.compose(rotated);
+}
+
+Point2 Mapper::Impl::fix_at_door(const Exit& entry) {
+  const std::optional<Point2> shift =
+      doors.pass({entry.center, entry.width_m, entry.heading_rad, travel_m});
+  if (!shift) return Point2::Zero();
+  correction = Pose2{shift->x(), shift->y(), 0.0}.compose(correction);
+  ++stats.door_fixes;
+  stats.door_fix_abs_m += shift->norm();
+  return *shift;
 }
 
 std::optional<int> Mapper::Impl::finish_room(double time_s,
@@ -353,6 +370,7 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   m.room_lo = m.room_lo.cwiseMin(pose.translation());
   m.room_hi = m.room_hi.cwiseMax(pose.translation());
   m.room_travel_m += (pose.translation() - m.room_last_point).norm();
+  m.travel_m += (pose.translation() - m.room_last_point).norm();
   m.room_last_point = pose.translation();
 
   std::optional<int> finished;
@@ -367,10 +385,18 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
     // The finished room's correction applies from now on: re-express pose and exit.
     const Pose2 fix = m.last_room_fix;
     pose = m.estimate(odometry);
-    const Exit entry{fix.transform(event->exit_center),
-                     event->exit_width_m,
-                     wrap_angle_rad(event->heading_rad + fix.theta_rad),
-                     {}};
+    Exit entry{fix.transform(event->exit_center),
+               event->exit_width_m,
+               wrap_angle_rad(event->heading_rad + fix.theta_rad),
+               {}};
+    // A doorway (a cut has no width) passed before fixes the estimate's position; with
+    // localisation off the estimate stays odometry's, as the thesis's baseline.
+    if (m.options.localization == LocalizationKind::kEm && m.options.door_fix.enabled &&
+        event->exit_width_m > 0.0) {
+      const Point2 shift = m.fix_at_door(entry);
+      entry.center += shift;
+      pose = m.estimate(odometry);
+    }
     m.room.start(m.next_id++, frame.time_s, pose, entry, finished);
     m.restart_room_path(pose.translation());
     if (m.options.glimpse.enabled) {

@@ -73,6 +73,8 @@ struct RunMetrics {
   std::optional<ErrorBreakdown> error_breakdown;     ///< per-stage error; needs ground truth
   std::size_t readings_used = 0;
   mapper::RejectedReadings rejected;
+  std::size_t door_fixes = 0;     ///< doorways passed again that moved the estimate
+  double door_fix_total_m = 0.0;  ///< the sum of those moves' lengths
   std::vector<RoomReport> rooms;
   double sim_time_s = 0.0;           ///< time of the last frame
   double wall_time_s = 0.0;          ///< run loop + metrics, figures excluded

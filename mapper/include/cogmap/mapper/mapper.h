@@ -14,6 +14,7 @@
 #include "cogmap/mapper/graph/asr_graph.h"
 #include "cogmap/mapper/graph/asr_store.h"
 #include "cogmap/mapper/grid/grid_updater.h"
+#include "cogmap/mapper/localization/door_fixes.h"
 #include "cogmap/mapper/localization/glimpse_heading.h"
 #include "cogmap/mapper/localization/localizer.h"
 #include "cogmap/mapper/localization/odometry_recalibration.h"
@@ -34,6 +35,7 @@ struct MapperOptions {
   LocalizerOptions localizer;
   TranslationOptions translation;  ///< a room's shift from the offsets of walls seen before
   GlimpseOptions glimpse;          ///< in-room heading correction by short glimpses
+  DoorFixOptions door_fix;         ///< position fixes at doorways passed again
   /// A skid-steer's odometry re-integrated with a curvature-dependent track before anything uses
   /// it (curvature_gain 0, or a differential drive: as reported).
   OdometryCalibration odometry_calibration;
@@ -72,6 +74,8 @@ struct MapperStats {
   double glimpse_correction_abs_rad = 0.0;  ///< Σ |glimpse rotations|
   std::size_t translations = 0;             ///< rooms shifted by their wall offsets
   double translation_abs_m = 0.0;           ///< Σ |those shifts|
+  std::size_t door_fixes = 0;               ///< doorways passed again that moved the estimate
+  double door_fix_abs_m = 0.0;              ///< Σ |those moves|
 };
 
 class Mapper {
