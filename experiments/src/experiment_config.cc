@@ -192,13 +192,13 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "translation_max_offset_m",
                      "translation_moves_estimate",
                      "glimpse",
-                     "door_fix",
-                     "door_fix_radius_m",
-                     "door_fix_drift_sd_per_m",
                      "glimpse_distance_m",
                      "glimpse_turn_deg",
                      "glimpse_min_wall_m",
                      "glimpse_min_total_wall_m",
+                     "door_fix",
+                     "door_fix_radius_m",
+                     "door_fix_drift_sd_per_m",
                      "odometry_curvature_gain"});
   mapper::MapperOptions o;
   if (const auto g = block.child("grid")) {
@@ -283,11 +283,6 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.translation.max_offset_m =
       number_in(block, "translation_max_offset_m", 0.05, 10.0, o.translation.max_offset_m);
   o.glimpse.enabled = block.get_or<bool>("glimpse", o.glimpse.enabled);
-  o.door_fix.enabled = block.get_or<bool>("door_fix", o.door_fix.enabled);
-  o.door_fix.match_radius_m =
-      number_in(block, "door_fix_radius_m", 0.05, 10.0, o.door_fix.match_radius_m);
-  o.door_fix.drift_sd_per_m =
-      number_in(block, "door_fix_drift_sd_per_m", 0.0, 100.0, o.door_fix.drift_sd_per_m);
   o.glimpse.distance_m = number_in(block, "glimpse_distance_m", 0.5, 100.0, o.glimpse.distance_m);
   o.glimpse.turn_rad = number_in(block, "glimpse_turn_deg", 10.0, 1e6,
                                  o.glimpse.turn_rad * 180.0 / std::numbers::pi) *
@@ -296,6 +291,11 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "glimpse_min_wall_m", 0.0, 100.0, o.glimpse.min_wall_length_m);
   o.glimpse.min_total_wall_m =
       number_in(block, "glimpse_min_total_wall_m", 0.0, 1000.0, o.glimpse.min_total_wall_m);
+  o.door_fix.enabled = block.get_or<bool>("door_fix", o.door_fix.enabled);
+  o.door_fix.match_radius_m =
+      number_in(block, "door_fix_radius_m", 0.05, 10.0, o.door_fix.match_radius_m);
+  o.door_fix.drift_sd_per_m =
+      number_in(block, "door_fix_drift_sd_per_m", 0.0, 100.0, o.door_fix.drift_sd_per_m);
   // A skid-steer's arcs (docs/algorithms.md, "Odometry recalibrated for arcs"): a track that
   // changes by half either way is no skid-steer any more.
   o.odometry_calibration.curvature_gain =

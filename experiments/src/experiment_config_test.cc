@@ -113,6 +113,18 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NE(error_of(p, {"mapper.em_reference_rooms=2.5"}).find("expected an integer"),
             std::string::npos);
   EXPECT_NE(error_of(p, {"mapper.glimpse_distance_m=0.1"}), "no error");
+  // Position fixes at doorways passed again: on, 0.8 m, 0.016 m per metre unless set.
+  EXPECT_TRUE(defaults.mapper.door_fix.enabled);
+  EXPECT_DOUBLE_EQ(defaults.mapper.door_fix.match_radius_m, 0.8);
+  EXPECT_DOUBLE_EQ(defaults.mapper.door_fix.drift_sd_per_m, 0.016);
+  const Experiment doors =
+      load_experiment(p, {"mapper.door_fix=false", "mapper.door_fix_radius_m=1.2",
+                          "mapper.door_fix_drift_sd_per_m=0.05"});
+  EXPECT_FALSE(doors.mapper.door_fix.enabled);
+  EXPECT_DOUBLE_EQ(doors.mapper.door_fix.match_radius_m, 1.2);
+  EXPECT_DOUBLE_EQ(doors.mapper.door_fix.drift_sd_per_m, 0.05);
+  EXPECT_NE(error_of(p, {"mapper.door_fix_radius_m=0"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.door_fix_drift_sd_per_m=-0.1"}), "no error");
   // The reference's bins, in degrees: none unless set (every direction on its own).
   EXPECT_EQ(defaults.mapper.localizer.reference_bin_rad, 0.0);
   EXPECT_NEAR(

@@ -369,8 +369,9 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   }
   m.room_lo = m.room_lo.cwiseMin(pose.translation());
   m.room_hi = m.room_hi.cwiseMax(pose.translation());
-  m.room_travel_m += (pose.translation() - m.room_last_point).norm();
-  m.travel_m += (pose.translation() - m.room_last_point).norm();
+  const double step_m = (pose.translation() - m.room_last_point).norm();
+  m.room_travel_m += step_m;
+  m.travel_m += step_m;
   m.room_last_point = pose.translation();
 
   std::optional<int> finished;
