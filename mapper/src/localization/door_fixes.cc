@@ -18,7 +18,8 @@ double axis_difference_rad(double a_rad, double b_rad) {
 
 std::optional<Point2> DoorMemory::pass(const DoorPassage& passage) {
   if (!(passage.width_m > 0.0 && passage.width_m <= options_.max_width_m) ||
-      !passage.center.allFinite() || !std::isfinite(passage.travel_m)) {
+      !passage.center.allFinite() || !std::isfinite(passage.heading_rad) ||
+      !std::isfinite(passage.travel_m)) {
     return std::nullopt;
   }
   const double max_axis_rad = options_.max_axis_difference_deg * std::numbers::pi / 180.0;

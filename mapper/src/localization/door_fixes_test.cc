@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <numbers>
 
 namespace cogmap::mapper {
@@ -96,6 +97,21 @@ TEST(DoorMemory, APassageBeyondTheRadiusIsANewDoor) {
   ASSERT_FALSE(memory.pass({{0.0, 0.0}, 1.0, 0.0, 0.0}));
   EXPECT_FALSE(memory.pass({{0.0, 0.85}, 1.0, 0.0, 50.0}));
   EXPECT_EQ(memory.doors().size(), 2u);
+}
+
+TEST(DoorMemory, APassageWithoutFiniteFiguresIsIgnored) {
+  // A log's garbage must neither move the estimate nor become a door later passages match.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  DoorMemory memory(options());
+  EXPECT_FALSE(memory.pass({{nan, 0.0}, 1.0, 0.0, 0.0}));
+  EXPECT_FALSE(memory.pass({{0.0, 0.0}, nan, 0.0, 0.0}));
+  EXPECT_FALSE(memory.pass({{0.0, 0.0}, 1.0, nan, 0.0}));
+  EXPECT_FALSE(memory.pass({{0.0, 0.0}, 1.0, 0.0, inf}));
+  EXPECT_TRUE(memory.doors().empty());
+  ASSERT_FALSE(memory.pass({{0.0, 0.0}, 1.0, 0.0, 0.0}));
+  EXPECT_FALSE(memory.pass({{0.1, inf}, 1.0, 0.0, 10.0}));
+  EXPECT_EQ(memory.doors().size(), 1u);
 }
 
 }  // namespace
