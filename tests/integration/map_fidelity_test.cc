@@ -109,9 +109,10 @@ INSTANTIATE_TEST_SUITE_P(
         // door fixes: 0.222 m, 0.626 m, 0.554, 0.411, 5.45°; mean 15.91° -> 2.94°. Without
         // them: 0.238 m, 0.653 m, 0.554, 0.434, 6.11°; mean 16.02° -> 3.34°.
         FidelityCase{"explore_nine_rooms", "explore_nine_rooms", {}, 0.28, 0.78, 0.44, 0.51, 6.8},
-        // 0.288 m, 0.823 m, 0.532, 0.484, 11.69° (seeds 4 and 5: EM's room corrections turn
-        // odometry's 8.7° and 2.5° to 11.5° and 11.7°, issue 10); mean 8.17° -> 7.74°. Without
-        // the fixes: 0.307 m, 0.826 m, 0.519, 0.509, 12.70°; mean 17.43° -> 5.42°.
+        // 0.288 m, 0.823 m, 0.532, 0.484, 11.69° (seeds 4 and 5 end at 11.5° and 11.7° against
+        // odometry's 8.7° and 2.5°, about 6° of it their last room's drift before its own
+        // correction: closed, 6.2° and 5.4°); mean 8.17° -> 7.74°. Without the fixes: 0.307 m,
+        // 0.826 m, 0.519, 0.509, 12.70°; mean 17.43° -> 5.42°.
         FidelityCase{
             "explore_three_room_slam", "explore_three_room_slam", {}, 0.36, 1.03, 0.42, 0.61, 14.6},
         // 0.247 m, 0.860 m, 0.686, 0.412, 9.06°; mean 13.67° -> 4.59°. One room, cut into
