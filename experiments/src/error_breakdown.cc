@@ -163,33 +163,47 @@ ErrorBreakdownBuilder::ErrorBreakdownBuilder(std::span<const Segment> truth,
       occupied_threshold_(occupied_threshold),
       sample_step_m_(options.sample_step_m) {}
 
-void ErrorBreakdownBuilder::add_room(const Pose2& room_to_world, const mapper::AsrTrace& trace) {
-  append(grid_m_, nearest_distances_m(
-                      truth_, occupied_cells_world(trace.raw, occupied_threshold_, room_to_world)));
-  append(cleaned_m_,
-         nearest_distances_m(
-             truth_, occupied_cells_world(trace.cleaned, occupied_threshold_, room_to_world)));
-  append(points_m_, nearest_distances_m(truth_, vertices_world(trace.extracted, room_to_world)));
+void ErrorBreakdownBuilder::add_room(int id, const Pose2& room_to_world,
+                                     const mapper::AsrTrace& trace) {
+  RoomPoints room;
+  room.id = id;
+  room.grid = occupied_cells_world(trace.raw, occupied_threshold_, room_to_world);
+  room.cleaned = occupied_cells_world(trace.cleaned, occupied_threshold_, room_to_world);
+  room.points = vertices_world(trace.extracted, room_to_world);
   // The fitted polylines are the ASR's walls (rejected fits kept as their DP segments), so
   // this stage samples exactly what the `map` block measures.
   const std::vector<Segment> lines = segments_world(trace.fitted, room_to_world);
   for (const SurfaceSample& s : sample_segments(lines, sample_step_m_)) {
-    lines_m_.push_back(truth_.nearest_distance_m(s.point));
+    room.lines.push_back(s.point);
+  }
+  rooms_.push_back(std::move(room));
+}
+
+void ErrorBreakdownBuilder::move_room(int id, const Pose2& move) {
+  for (RoomPoints& room : rooms_) {
+    if (room.id != id) continue;
+    for (std::vector<Point2>* stage : {&room.grid, &room.cleaned, &room.points, &room.lines}) {
+      for (Point2& p : *stage) p = move.transform(p);
+    }
   }
 }
 
 ErrorBreakdown ErrorBreakdownBuilder::finish(TrajectoryView rows) {
-  ErrorBreakdown b;
-  b.grid = stage_error(grid_m_);
-  b.cleaned = stage_error(cleaned_m_);
-  b.points = stage_error(points_m_);
-  b.lines = stage_error(lines_m_);
-  b.heading = heading_breakdown(rows, spans_);
-  // The samples are done with: give their memory back before the map metrics run (a 6 x 6
-  // block holds ~190 KB of them).
-  for (std::vector<double>* v : {&grid_m_, &cleaned_m_, &points_m_, &lines_m_}) {
-    std::vector<double>().swap(*v);
+  std::vector<double> grid_m, cleaned_m, points_m, lines_m;
+  for (const RoomPoints& room : rooms_) {
+    append(grid_m, nearest_distances_m(truth_, room.grid));
+    append(cleaned_m, nearest_distances_m(truth_, room.cleaned));
+    append(points_m, nearest_distances_m(truth_, room.points));
+    append(lines_m, nearest_distances_m(truth_, room.lines));
   }
+  ErrorBreakdown b;
+  b.grid = stage_error(grid_m);
+  b.cleaned = stage_error(cleaned_m);
+  b.points = stage_error(points_m);
+  b.lines = stage_error(lines_m);
+  b.heading = heading_breakdown(rows, spans_);
+  // The points are done with: give their memory back before the map metrics run.
+  std::vector<RoomPoints>().swap(rooms_);
   return b;
 }
 

@@ -60,7 +60,7 @@ TEST(ErrorBreakdown, StagesMeasuredAgainstAKnownWall) {
   trace.fitted = {{{0.0, 0.1}, {1.0, 0.1}}};  // 1 m at 0.1 m off: 20 samples of 5 cm
 
   ErrorBreakdownBuilder builder(kTruth, 7.0);
-  builder.add_room(kRoomToWorld, trace);
+  builder.add_room(0, kRoomToWorld, trace);
   const ErrorBreakdown b = builder.finish({});
 
   // Raw: sorted 0.05 x5, 0.15 x3, 0.35. Median: the 5th of 9 = 0.05. p90: position
@@ -82,13 +82,34 @@ TEST(ErrorBreakdown, StagesMeasuredAgainstAKnownWall) {
   EXPECT_FALSE(b.heading.entry_error_deg_mean_abs.has_value());
 }
 
+// A room re-placed after it was added (the end-of-run relaxation) is measured where it ends:
+// moved 0.1 m away from the wall (world −x), its rows 0.05, 0.15 and 0.35 m off become 0.15,
+// 0.25 and 0.45 m off; the other room's points stay.
+TEST(ErrorBreakdown, AMovedRoomIsMeasuredWhereItEnds) {
+  mapper::AsrTrace trace;
+  trace.raw = raw_grid();
+  trace.cleaned = empty_grid();
+  ErrorBreakdownBuilder builder(kTruth, 7.0);
+  builder.add_room(3, kRoomToWorld, trace);
+  builder.add_room(4, kRoomToWorld, trace);
+  builder.move_room(4, Pose2{-0.1, 0.0, 0.0});
+  builder.move_room(7, Pose2{5.0, 0.0, 0.0});  // no such room: nothing moves
+  const ErrorBreakdown b = builder.finish({});
+  ASSERT_EQ(b.grid.count, 18u);
+  // Room 3: 0.05 x5, 0.15 x3, 0.35; room 4: 0.15 x5, 0.25 x3, 0.45. Sorted: 0.05 x5, 0.15 x8
+  // (5-12), 0.25 x3 (13-15), 0.35, 0.45: median (positions 8 and 9) 0.15.
+  EXPECT_NEAR(*b.grid.median_m, 0.15, kEps);
+  // p90 at position 0.9 * 17 = 15.3: 0.25 + 0.3 * 0.1 = 0.28.
+  EXPECT_NEAR(*b.grid.p90_m, 0.28, kEps);
+}
+
 TEST(ErrorBreakdown, RoomsAccumulateAndAnEmptyStageIsUndefined) {
   mapper::AsrTrace trace;
   trace.raw = raw_grid();
   trace.cleaned = empty_grid();
   ErrorBreakdownBuilder builder(kTruth, 7.0);
-  builder.add_room(kRoomToWorld, trace);
-  builder.add_room(kRoomToWorld, trace);
+  builder.add_room(0, kRoomToWorld, trace);
+  builder.add_room(1, kRoomToWorld, trace);
   const ErrorBreakdown b = builder.finish({});
   EXPECT_EQ(b.grid.count, 18u);
   // Sorted 0.05 x10 (positions 0-9), 0.15 x6 (10-15), 0.35 x2 (16, 17): median at 8.5: 0.05;

@@ -199,6 +199,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "door_fix",
                      "door_fix_radius_m",
                      "door_fix_drift_sd_per_m",
+                     "relax",
+                     "relax_wall_thickness_m",
                      "odometry_curvature_gain"});
   mapper::MapperOptions o;
   if (const auto g = block.child("grid")) {
@@ -296,6 +298,9 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "door_fix_radius_m", 0.05, 10.0, o.door_fix.match_radius_m);
   o.door_fix.drift_sd_per_m =
       number_in(block, "door_fix_drift_sd_per_m", 0.0, 100.0, o.door_fix.drift_sd_per_m);
+  o.relaxation.enabled = block.get_or<bool>("relax", o.relaxation.enabled);
+  o.relaxation.wall_thickness_m =
+      number_in(block, "relax_wall_thickness_m", 0.0, 2.0, o.relaxation.wall_thickness_m);
   // A skid-steer's arcs (docs/algorithms.md, "Odometry recalibrated for arcs"): a track that
   // changes by half either way is no skid-steer any more.
   o.odometry_calibration.curvature_gain =

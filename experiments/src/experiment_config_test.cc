@@ -125,6 +125,15 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_DOUBLE_EQ(doors.mapper.door_fix.drift_sd_per_m, 0.05);
   EXPECT_NE(error_of(p, {"mapper.door_fix_radius_m=0"}), "no error");
   EXPECT_NE(error_of(p, {"mapper.door_fix_drift_sd_per_m=-0.1"}), "no error");
+  // The end-of-run relaxation: on, a first guess of 0.15 m walls unless set.
+  EXPECT_TRUE(defaults.mapper.relaxation.enabled);
+  EXPECT_DOUBLE_EQ(defaults.mapper.relaxation.wall_thickness_m, 0.15);
+  const Experiment relaxed =
+      load_experiment(p, {"mapper.relax=false", "mapper.relax_wall_thickness_m=0.3"});
+  EXPECT_FALSE(relaxed.mapper.relaxation.enabled);
+  EXPECT_DOUBLE_EQ(relaxed.mapper.relaxation.wall_thickness_m, 0.3);
+  EXPECT_NE(error_of(p, {"mapper.relax_wall_thickness_m=-0.1"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.relax=maybe"}), "no error");
   // The reference's bins, in degrees: none unless set (every direction on its own).
   EXPECT_EQ(defaults.mapper.localizer.reference_bin_rad, 0.0);
   EXPECT_NEAR(

@@ -161,6 +161,13 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"unknown_sonar", m.rejected.unknown_sonar},
                      {"total", m.rejected.total()}}}};
   j["door_fixes"] = {{"count", m.door_fixes}, {"total_m", m.door_fix_total_m}};
+  if (m.relaxation) {
+    j["relaxation"] = {{"rooms_moved", m.relaxation->rooms_moved},
+                       {"total_m", m.relaxation->total_m},
+                       {"max_m", m.relaxation->max_m},
+                       {"wall_thickness_m", m.relaxation->wall_thickness_m},
+                       {"pairs", m.relaxation->pairs}};
+  }
   Json rooms = Json::array();
   for (const RoomReport& r : m.rooms) {
     Json localization(nullptr);

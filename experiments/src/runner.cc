@@ -254,14 +254,14 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     }
     const RoomSpan span{asr.start_time_s, asr.end_time_s, asr.pose.theta_rad, !closing_run};
     if (room_task.valid()) room_task.get();  // the previous room's (rethrows its failure)
-    room_task = std::async(
-        std::launch::async, [&, pose = asr.pose, stages = std::move(stages), span, stem] {
-          write_ros_map(stages.raw, occupied_threshold, out, "grid_" + stem, durability);
-          if (breakdown) {
-            breakdown->add_room(pose, stages);
-            breakdown->add_room_span(span);
-          }
-        });
+    room_task = std::async(std::launch::async, [&, id = asr.id, pose = asr.pose,
+                                                stages = std::move(stages), span, stem] {
+      write_ros_map(stages.raw, occupied_threshold, out, "grid_" + stem, durability);
+      if (breakdown) {
+        breakdown->add_room(id, pose, stages);
+        breakdown->add_room_span(span);
+      }
+    });
     if (figures) {
       const auto t0 = Clock::now();
       render::write_room_stages_figure(trace, experiment.name + ": room " + std::to_string(asr.id),
@@ -335,6 +335,19 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     closing_run = true;
     mapper.finish();
     if (!session.rows.empty()) session.closed_heading_rad = mapper.pose_estimate().theta_rad;
+    // The end-of-run relaxation re-placed rooms the listener already drew: move their walls,
+    // labels and breakdown samples with them.
+    if (room_task.valid()) room_task.get();
+    for (const auto& [id, move] : mapper.room_moves()) {
+      for (mapper::Mapper::MapSegment& s : corrected) {
+        if (s.asr_id != id) continue;
+        s.segment = {move.transform(s.segment.a), move.transform(s.segment.b)};
+      }
+      for (auto& [label_id, p] : labels) {
+        if (label_id == id) p = move.transform(p);
+      }
+      if (breakdown) breakdown->move_room(id, move);
+    }
   } catch (const std::exception& e) {
     try {
       robot.stop();
@@ -382,6 +395,12 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.rejected = stats.rejected;
   m.door_fixes = stats.door_fixes;
   m.door_fix_total_m = stats.door_fix_abs_m;
+  if (experiment.mapper.relaxation.enabled &&
+      experiment.mapper.localization == mapper::LocalizationKind::kEm) {
+    m.relaxation =
+        RunMetrics::Relaxation{stats.relaxed_rooms, stats.relaxation_abs_m, stats.relaxation_max_m,
+                               stats.relaxation_wall_thickness_m, stats.relaxation_pairs};
+  }
   m.build_time_s = stats.build_time_s;
   m.localization_time_s = stats.localization_time_s;
   m.room_cpu_s = room_cpu_s;

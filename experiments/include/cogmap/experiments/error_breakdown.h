@@ -92,16 +92,19 @@ struct ErrorBreakdown {
   HeadingBreakdown heading;
 };
 
-/// Collects the stage distances room by room, from inside the mapper's room listener: the
-/// trace (whole grids) is dropped after that call, so only one distance per occupied cell,
-/// vertex and line sample is kept, never a grid.
+/// Collects the stages' points room by room, from inside the mapper's room listener: the trace
+/// (whole grids) is dropped after that call, so only one point per occupied cell, vertex and
+/// line sample is kept, never a grid. Points, not distances: the end-of-run relaxation may
+/// still move a room (move_room), and the breakdown measures the map as it is written.
 class ErrorBreakdownBuilder {
  public:
   ErrorBreakdownBuilder(std::span<const mapper::Segment> truth, double occupied_threshold,
                         const MapMetricsOptions& options = {});
 
   /// `room_to_world` is the finished room's asr.pose (local -> corrected world).
-  void add_room(const mapper::Pose2& room_to_world, const mapper::AsrTrace& trace);
+  void add_room(int id, const mapper::Pose2& room_to_world, const mapper::AsrTrace& trace);
+  /// Room `id` was re-placed: `move` (world -> world) applies to all its points.
+  void move_room(int id, const mapper::Pose2& move);
   void add_room_span(const RoomSpan& span) { spans_.push_back(span); }
 
   const SegmentIndex& truth_index() const { return truth_; }
@@ -114,7 +117,11 @@ class ErrorBreakdownBuilder {
   SegmentIndex truth_;
   double occupied_threshold_;
   double sample_step_m_;
-  std::vector<double> grid_m_, cleaned_m_, points_m_, lines_m_;
+  struct RoomPoints {
+    int id = -1;
+    std::vector<mapper::Point2> grid, cleaned, points, lines;
+  };
+  std::vector<RoomPoints> rooms_;
   std::vector<RoomSpan> spans_;
 };
 

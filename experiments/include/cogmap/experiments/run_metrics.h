@@ -75,6 +75,15 @@ struct RunMetrics {
   mapper::RejectedReadings rejected;
   std::size_t door_fixes = 0;     ///< doorways passed again that moved the estimate
   double door_fix_total_m = 0.0;  ///< the sum of those moves' lengths
+  /// The end-of-run relaxation of the rooms' positions (mapper.relax; absent when off).
+  struct Relaxation {
+    std::size_t rooms_moved = 0;
+    double total_m = 0.0;  ///< Σ |shift| over the rooms
+    double max_m = 0.0;
+    double wall_thickness_m = 0.0;  ///< as estimated from walls seen from both sides
+    std::size_t pairs = 0;          ///< wall pairs in its last round
+  };
+  std::optional<Relaxation> relaxation;
   std::vector<RoomReport> rooms;
   double sim_time_s = 0.0;           ///< time of the last frame
   double wall_time_s = 0.0;          ///< run loop + metrics, figures excluded

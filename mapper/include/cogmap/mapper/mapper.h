@@ -17,6 +17,7 @@
 #include "cogmap/mapper/localization/door_fixes.h"
 #include "cogmap/mapper/localization/glimpse_heading.h"
 #include "cogmap/mapper/localization/localizer.h"
+#include "cogmap/mapper/localization/map_relaxation.h"
 #include "cogmap/mapper/localization/odometry_recalibration.h"
 #include "cogmap/mapper/localization/wall_offsets.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
@@ -36,6 +37,7 @@ struct MapperOptions {
   TranslationOptions translation;  ///< a room's shift from the offsets of walls seen before
   GlimpseOptions glimpse;          ///< in-room heading correction by short glimpses
   DoorFixOptions door_fix;         ///< position fixes at doorways passed again
+  RelaxationOptions relaxation;    ///< the rooms' positions adjusted together when the run ends
   /// A skid-steer's odometry re-integrated with a curvature-dependent track before anything uses
   /// it (curvature_gain 0, or a differential drive: as reported).
   OdometryCalibration odometry_calibration;
@@ -69,13 +71,18 @@ struct MapperStats {
   double build_time_s = 0.0;         ///< CPU spent in the room -> ASR pipeline
   double localization_time_s = 0.0;  ///< CPU spent in EM and the translation
   std::size_t peak_grid_bytes = 0;
-  std::size_t glimpses = 0;                 ///< glimpses measured (in-room heading correction)
-  std::size_t glimpse_corrections = 0;      ///< of which EM applied a rotation
-  double glimpse_correction_abs_rad = 0.0;  ///< Σ |glimpse rotations|
-  std::size_t translations = 0;             ///< rooms shifted by their wall offsets
-  double translation_abs_m = 0.0;           ///< Σ |those shifts|
-  std::size_t door_fixes = 0;               ///< doorways passed again that moved the estimate
-  double door_fix_abs_m = 0.0;              ///< Σ |those moves|
+  std::size_t glimpses = 0;                  ///< glimpses measured (in-room heading correction)
+  std::size_t glimpse_corrections = 0;       ///< of which EM applied a rotation
+  double glimpse_correction_abs_rad = 0.0;   ///< Σ |glimpse rotations|
+  std::size_t translations = 0;              ///< rooms shifted by their wall offsets
+  double translation_abs_m = 0.0;            ///< Σ |those shifts|
+  std::size_t door_fixes = 0;                ///< doorways passed again that moved the estimate
+  double door_fix_abs_m = 0.0;               ///< Σ |those moves|
+  std::size_t relaxed_rooms = 0;             ///< rooms the end-of-run relaxation moved
+  double relaxation_abs_m = 0.0;             ///< Σ |those shifts|
+  double relaxation_max_m = 0.0;             ///< the largest
+  double relaxation_wall_thickness_m = 0.0;  ///< as the relaxation estimated it
+  std::size_t relaxation_pairs = 0;          ///< wall pairs it used (same side and two faces)
 };
 
 class Mapper {
@@ -99,8 +106,13 @@ class Mapper {
   std::optional<int> process(const SensorFrame& frame);
 
   /// Closes the current room (end of run); returns its id if it produced an ASR. The room's
-  /// correction (EM) then applies to pose_estimate() as well.
+  /// correction (EM) then applies to pose_estimate() as well. With options.relaxation, every
+  /// room is then re-placed (store and graph updated); room_moves() says how.
   std::optional<int> finish();
+
+  /// The rooms finish() re-placed: room id -> the world-frame transform that takes the room as
+  /// it was placed on leaving it (what the room listener saw) to where it stands now.
+  const std::vector<std::pair<int, Pose2>>& room_moves() const;
 
   /// Odometry composed with the start pose, world frame.
   Pose2 odometry_pose() const;
