@@ -306,7 +306,7 @@ TEST(Mapper, RelaxationPullsTheCutsOntoTheWallsTheyShare) {
     EXPECT_LT(move.y_m, 0.0);  // back towards the right: the odometry slipped to the left
     EXPECT_NEAR(move.theta_rad, 0.0, 1e-12);
   }
-  // 0.211 m without (measured) against 0.088 m: the pairs weigh against the drift the chain
+  // 0.211 m without (measured) against 0.080 m: the pairs weigh against the drift the chain
   // allows between 4 m cuts (0.064 m), so each cut keeps part of its slip.
   EXPECT_GT(off.median_wall_error_m, 0.18);
   EXPECT_LT(relaxed.median_wall_error_m, 0.10);

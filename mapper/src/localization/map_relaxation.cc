@@ -67,10 +67,20 @@ void pair_rooms(int i, int j, const RelaxationRoom& ri, const RelaxationRoom& rj
       if (std::abs(cross(uc, ur)) > sin_max) continue;
       const double s0 = ur.dot(ca - ra), s1 = ur.dot(cb - ra);
       const double lo = std::max(std::min(s0, s1), 0.0), hi = std::min(std::max(s0, s1), r_len);
-      const double overlap = hi - lo;
-      if (overlap < o.min_overlap_m || s1 == s0) continue;
-      const double mid = 0.5 * (lo + hi);
-      const Point2 p = ca + (mid - s0) / (s1 - s0) * (cb - ca);
+      double overlap = hi - lo;
+      if (s1 == s0) continue;
+      double at = 0.5 * (lo + hi);  // where along r the offset is taken
+      if (overlap < o.min_overlap_m) {
+        // Collinear pieces of one wall line that do not overlap (consecutive cuts of a corridor,
+        // a wall's run on either side of a junction): the offset at c's end nearest to r, to
+        // r's line, weighed as continuation_weight_m of overlap.
+        if (!(o.continuation_gap_m > 0.0) || !same_side || overlap < -o.continuation_gap_m)
+          continue;
+        const double c_lo = std::min(s0, s1), c_hi = std::max(s0, s1);
+        at = c_lo >= r_len ? c_lo : (c_hi <= 0.0 ? c_hi : 0.5 * (lo + hi));
+        overlap = o.continuation_weight_m;
+      }
+      const Point2 p = ca + (at - s0) / (s1 - s0) * (cb - ca);
       // Along r's normal (towards where r was seen from): 0 for the same face, −thickness for
       // the face on the wall's other side.
       const double offset = r.normal.dot(ra - p);
@@ -119,6 +129,27 @@ Relaxation relax_room_positions(std::span<const RelaxationRoom> input, const Rel
   }
   std::vector<Box> boxes;
   for (const RelaxationRoom& room : rooms) boxes.push_back(bounds(room));
+  // Each room's candidate partners: the earlier rooms whose walls come near its own, the
+  // max_partners nearest (a robot that tours one office for hours cuts thousands of rooms in
+  // the same place; every pair of them would make the search quadratic and the problem dense).
+  const double reach_m = o.max_gate_m + o.wall_thickness_m + o.continuation_gap_m + 1.0;
+  std::vector<std::vector<int>> partners(n);
+  for (int i = 1; i < n; ++i) {
+    if (boxes[i].empty()) continue;
+    const Point2 centre_i = 0.5 * (boxes[i].lo + boxes[i].hi);
+    std::vector<std::pair<double, int>> near;
+    for (int j = 0; j < i; ++j) {
+      if (boxes[j].empty()) continue;
+      if ((boxes[i].lo.array() > boxes[j].hi.array() + reach_m).any() ||
+          (boxes[j].lo.array() > boxes[i].hi.array() + reach_m).any()) {
+        continue;
+      }
+      near.emplace_back((0.5 * (boxes[j].lo + boxes[j].hi) - centre_i).squaredNorm(), j);
+    }
+    const std::size_t keep = std::min<std::size_t>(near.size(), std::max(o.max_partners, 0));
+    std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end());
+    for (std::size_t k = 0; k < keep; ++k) partners[i].push_back(near[k].second);
+  }
 
   const int unknowns = 2 * n + 1;  // the shifts, then the thickness
   const int t_index = 2 * n;
@@ -129,16 +160,14 @@ Relaxation relax_room_positions(std::span<const RelaxationRoom> input, const Rel
   for (int round = 0; round < std::max(o.rounds, 1); ++round) {
     pairs.clear();
     for (int i = 1; i < n; ++i) {
-      if (boxes[i].empty()) continue;
-      for (int j = 0; j < i; ++j) {
-        if (boxes[j].empty()) continue;
+      for (const int j : partners[i]) {
         const double first_gate = std::clamp(o.gate_sigmas * std::sqrt(chain_var[i] - chain_var[j]),
                                              o.min_gate_m, o.max_gate_m);
         const double gate = round == 0 ? first_gate : std::min(first_gate, o.later_gate_m);
         const Point2 si = result.shifts[i], sj = result.shifts[j];
         const Point2 lo_i = boxes[i].lo + si, hi_i = boxes[i].hi + si;
         const Point2 lo_j = boxes[j].lo + sj, hi_j = boxes[j].hi + sj;
-        const double margin = gate + o.wall_thickness_m;
+        const double margin = gate + o.wall_thickness_m + o.continuation_gap_m;
         if ((lo_i.array() > hi_j.array() + margin).any() ||
             (lo_j.array() > hi_i.array() + margin).any()) {
           continue;

@@ -24,6 +24,9 @@ RelaxationOptions options() {
   o.offset_sd_m = 0.1;
   o.wall_thickness_m = 0.15;
   o.wall_thickness_sd_m = 0.08;
+  o.continuation_gap_m = 1.0;
+  o.continuation_weight_m = 0.5;
+  o.max_partners = 32;
   return o;
 }
 
@@ -66,12 +69,12 @@ TEST(MapRelaxation, AnAmbiguousPieceMovesNothing) {
 }
 
 // Too far apart for the drift between the rooms (0.9 m > the 0.8 m gate), crossing at 20°, or
-// overlapping by 0.3 m only: not the same wall.
+// on one line but 1.2 m beyond its end (more than the 1 m continuation gap): not the same wall.
 TEST(MapRelaxation, WallsBeyondTheGatesAreNotPaired) {
   const RelaxationRoom first = {{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0};
   for (const FacingSegment& other :
        {wall({0.0, 2.9}, {4.0, 2.9}, {0.0, -1.0}), wall({0.0, 1.6}, {4.0, 3.06}, {0.0, -1.0}),
-        wall({3.7, 2.1}, {6.0, 2.1}, {0.0, -1.0})}) {
+        wall({5.2, 2.1}, {8.0, 2.1}, {0.0, -1.0})}) {
     const std::vector<RelaxationRoom> rooms = {first, {{other}, 500.0}};
     const Relaxation r = relax_room_positions(rooms, options());
     EXPECT_EQ(r.same_side_pairs + r.two_face_pairs, 0);
@@ -82,6 +85,35 @@ TEST(MapRelaxation, WallsBeyondTheGatesAreNotPaired) {
   const std::vector<RelaxationRoom> near = {first,
                                             {{wall({0.0, 2.3}, {4.0, 2.3}, {0.0, -1.0})}, 1.0}};
   EXPECT_EQ(relax_room_positions(near, options()).same_side_pairs, 0);
+}
+
+// Room 1 draws the wall's next run, 0.6 m past the end of room 0's piece (a door between them),
+// 0.2 m too far north: the offset at its near end pairs them with 0.5 m of overlap's weight
+// (50 against the chain's 1/0.64). Seen from the other side, or 1.2 m on, it would not.
+TEST(MapRelaxation, TheNextRunOfAWallLineIsPairedAcrossAGap) {
+  const std::vector<RelaxationRoom> rooms = {{{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0},
+                                             {{wall({4.6, 2.2}, {8.6, 2.2}, {0.0, -1.0})}, 50.0}};
+  const Relaxation r = relax_room_positions(rooms, options());
+  EXPECT_EQ(r.same_side_pairs, 1);
+  EXPECT_NEAR(r.shifts[1].y(), -0.2 * 50.0 / (50.0 + 1.0 / 0.64), 1e-9);
+  RelaxationOptions off = options();
+  off.continuation_gap_m = 0.0;
+  EXPECT_EQ(relax_room_positions(rooms, off).same_side_pairs, 0);
+  const std::vector<RelaxationRoom> other_side = {
+      rooms[0], {{wall({4.6, 2.2}, {8.6, 2.2}, {0.0, 1.0})}, 50.0}};
+  EXPECT_EQ(relax_room_positions(other_side, options()).two_face_pairs, 0);
+}
+
+// A robot that stays in one office cuts room after room on the same walls: each is paired
+// with its max_partners nearest earlier rooms only (5 here: rooms 1-4 have fewer before them),
+// so the work and the problem grow with the rooms, not with their square.
+TEST(MapRelaxation, RoomsInOnePlaceArePairedWithTheirNearestFew) {
+  std::vector<RelaxationRoom> rooms(100, {{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 4.5});
+  RelaxationOptions o = options();
+  o.max_partners = 5;
+  const Relaxation r = relax_room_positions(rooms, o);
+  EXPECT_EQ(r.same_side_pairs, 1 + 2 + 3 + 4 + 95 * 5);
+  for (const Point2& s : r.shifts) EXPECT_NEAR(s.norm(), 0.0, 1e-9);
 }
 
 // A wall's south face from room 0, its north face from room 1, drawn 0.2 m too far north; the

@@ -55,6 +55,15 @@ struct RelaxationOptions {
   double ambiguity_ratio = 2.0;
   double ambiguity_margin_m = 0.1;
   int rounds = 5;  ///< pair, solve, re-pair with the rooms where the last solution put them
+  /// Pieces on one line, seen from the same side, that do not overlap but end within this of
+  /// each other pair too (0: never): a wall runs on past a door (0.8-1.2 m) on the same line,
+  /// and a corridor's consecutive cuts draw its walls end to end. Their offset is taken at the
+  /// nearer end and weighed as continuation_weight_m of overlap (an extrapolation).
+  double continuation_gap_m = 1.0;
+  double continuation_weight_m = 0.5;
+  /// A room is paired with at most this many earlier rooms, the nearest (as EM's reference
+  /// rooms): bounds the work and the problem's fill however long a run stays in one place.
+  int max_partners = 32;
 };
 
 /// One room as the end of the run sees it: its walls as pieces facing the side the robot saw
