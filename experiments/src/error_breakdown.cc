@@ -179,11 +179,13 @@ void ErrorBreakdownBuilder::add_room(int id, const Pose2& room_to_world,
   rooms_.push_back(std::move(room));
 }
 
-void ErrorBreakdownBuilder::move_room(int id, const Pose2& move) {
-  for (RoomPoints& room : rooms_) {
-    if (room.id != id) continue;
-    for (std::vector<Point2>* stage : {&room.grid, &room.cleaned, &room.points, &room.lines}) {
-      for (Point2& p : *stage) p = move.transform(p);
+void ErrorBreakdownBuilder::move_rooms(std::span<const std::pair<int, Pose2>> moves) {
+  for (const auto& [id, move] : moves) {
+    for (RoomPoints& room : rooms_) {
+      if (room.id != id) continue;
+      for (std::vector<Point2>* stage : {&room.grid, &room.cleaned, &room.points, &room.lines}) {
+        for (Point2& p : *stage) p = move.transform(p);
+      }
     }
   }
 }

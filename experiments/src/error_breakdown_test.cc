@@ -92,8 +92,9 @@ TEST(ErrorBreakdown, AMovedRoomIsMeasuredWhereItEnds) {
   ErrorBreakdownBuilder builder(kTruth, 7.0);
   builder.add_room(3, kRoomToWorld, trace);
   builder.add_room(4, kRoomToWorld, trace);
-  builder.move_room(4, Pose2{-0.1, 0.0, 0.0});
-  builder.move_room(7, Pose2{5.0, 0.0, 0.0});  // no such room: nothing moves
+  const std::vector<std::pair<int, Pose2>> moves = {{4, Pose2{-0.1, 0.0, 0.0}},
+                                                    {7, Pose2{5.0, 0.0, 0.0}}};  // no room 7
+  builder.move_rooms(moves);
   const ErrorBreakdown b = builder.finish({});
   ASSERT_EQ(b.grid.count, 18u);
   // Room 3: 0.05 x5, 0.15 x3, 0.35; room 4: 0.15 x5, 0.25 x3, 0.45. Sorted: 0.05 x5, 0.15 x8

@@ -212,4 +212,13 @@ std::string metrics_json_text(const RunMetrics& m) {
   return j.dump(2) + "\n";
 }
 
+std::optional<RunMetrics::Relaxation> relaxation_metrics(const mapper::MapperOptions& options,
+                                                         const mapper::MapperStats& stats) {
+  if (!options.relaxation.enabled || options.localization != mapper::LocalizationKind::kEm) {
+    return std::nullopt;
+  }
+  return RunMetrics::Relaxation{stats.relaxed_rooms, stats.relaxation_abs_m, stats.relaxation_max_m,
+                                stats.relaxation_wall_thickness_m, stats.relaxation_pairs};
+}
+
 }  // namespace cogmap::experiments

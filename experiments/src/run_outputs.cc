@@ -106,6 +106,19 @@ std::string segments_csv(std::span<const mapper::Mapper::MapSegment> segments) {
   return out;
 }
 
+void move_rooms(std::span<const std::pair<int, mapper::Pose2>> moves,
+                std::vector<mapper::Mapper::MapSegment>& map,
+                std::vector<std::pair<int, mapper::Point2>>& labels) {
+  for (const auto& [id, move] : moves) {
+    for (mapper::Mapper::MapSegment& s : map) {
+      if (s.asr_id == id) s.segment = {move.transform(s.segment.a), move.transform(s.segment.b)};
+    }
+    for (auto& [label_id, p] : labels) {
+      if (label_id == id) p = move.transform(p);
+    }
+  }
+}
+
 std::vector<mapper::Segment> segments_of(std::span<const mapper::Mapper::MapSegment> map) {
   std::vector<mapper::Segment> out;
   out.reserve(map.size());

@@ -338,16 +338,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     // The end-of-run relaxation re-placed rooms the listener already drew: move their walls,
     // labels and breakdown samples with them.
     if (room_task.valid()) room_task.get();
-    for (const auto& [id, move] : mapper.room_moves()) {
-      for (mapper::Mapper::MapSegment& s : corrected) {
-        if (s.asr_id != id) continue;
-        s.segment = {move.transform(s.segment.a), move.transform(s.segment.b)};
-      }
-      for (auto& [label_id, p] : labels) {
-        if (label_id == id) p = move.transform(p);
-      }
-      if (breakdown) breakdown->move_room(id, move);
-    }
+    move_rooms(mapper.room_moves(), corrected, labels);
+    if (breakdown) breakdown->move_rooms(mapper.room_moves());
   } catch (const std::exception& e) {
     try {
       robot.stop();
@@ -395,12 +387,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.rejected = stats.rejected;
   m.door_fixes = stats.door_fixes;
   m.door_fix_total_m = stats.door_fix_abs_m;
-  if (experiment.mapper.relaxation.enabled &&
-      experiment.mapper.localization == mapper::LocalizationKind::kEm) {
-    m.relaxation =
-        RunMetrics::Relaxation{stats.relaxed_rooms, stats.relaxation_abs_m, stats.relaxation_max_m,
-                               stats.relaxation_wall_thickness_m, stats.relaxation_pairs};
-  }
+  m.relaxation = relaxation_metrics(experiment.mapper, stats);
   m.build_time_s = stats.build_time_s;
   m.localization_time_s = stats.localization_time_s;
   m.room_cpu_s = room_cpu_s;

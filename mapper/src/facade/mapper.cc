@@ -7,6 +7,7 @@
 
 #include "cogmap/mapper/localization/glimpse_heading.h"
 #include "facade/room_recorder.h"
+#include "facade/room_relaxation.h"
 
 namespace cogmap::mapper {
 namespace {
@@ -47,11 +48,8 @@ struct Mapper::Impl {
   Localizer localizer;
   GlimpseHeading glimpse;
   DoorMemory doors;  ///< doorways passed so far (options.door_fix)
-  /// Per finished room (options.relaxation): its walls facing where they were seen from, placed
-  /// by the estimate's own correction (EM's rotation, not the map-only shift), and that
-  /// placement; what the end-of-run relaxation starts from. A few pieces a room.
-  std::vector<RelaxationRoom> relaxation_rooms;
-  std::vector<std::pair<int, Pose2>> relaxation_placements;
+  /// Per finished room (options.relaxation), what the end-of-run relaxation starts from.
+  internal::RoomRelaxation relaxation;
   std::vector<std::pair<int, Pose2>> room_moves;  ///< what finish() re-placed
   /// This room's earlier glimpses' walls (world, corrected): EM reference besides `resident`.
   std::deque<std::vector<Polyline>> glimpse_walls;
@@ -108,6 +106,7 @@ struct Mapper::Impl {
                 builder_with_range(opts.builder, geometry), opts.localizer,
                 opts.grid_options.cell_scale_mm / 2000.0),
         doors(opts.door_fix),
+        relaxation(opts.relaxation),
         recalibrator(applied_curvature_gain(opts.odometry_calibration, geometry),
                      geometry.odometry_track_m) {
     options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
@@ -144,10 +143,6 @@ struct Mapper::Impl {
   /// to the estimate from now on (zero for a new door).
   Point2 fix_at_door(const Exit& entry);
   Localization localize(const Asr& asr, const AsrTrace& trace) const;
-  /// Records the finished room for the end-of-run relaxation, placed by `placement`.
-  void remember_for_relaxation(const Asr& asr, const AsrTrace& trace, const Pose2& placement);
-  /// The end of the run: every room shifted together (options.relaxation), re-saved.
-  void relax_rooms();
   /// The shift of a room (after EM's rotation `rotated`) from its walls' offsets against the
   /// reference rooms' (options.translation); records it in `localized`.
   Pose2 translate(const Asr& asr, const AsrTrace& trace, const Pose2& rotated,
@@ -244,46 +239,6 @@ Pose2 Mapper::Impl::translate(const Asr& asr, const AsrTrace& trace, const Pose2
   return Pose2{fix.shift.x(), fix.shift.y(), 0.0}.compose(rotated);
 }
 
-void Mapper::Impl::remember_for_relaxation(const Asr& asr, const AsrTrace& trace,
-                                           const Pose2& placement) {
-  std::vector<Polyline> walls = accepted_walls(trace);
-  for (Polyline& line : walls) {
-    for (Point2& p : line) p = placement.transform(p);
-  }
-  std::vector<Point2> path;
-  for (const Point2& p : asr.path) path.push_back(placement.transform(p));
-  relaxation_rooms.push_back(
-      {facing_segments(walls, path, options.relaxation.min_segment_m), path_length_m(asr.path)});
-  relaxation_placements.emplace_back(asr.id, placement);
-}
-
-void Mapper::Impl::relax_rooms() {
-  const auto start = std::chrono::steady_clock::now();
-  const Relaxation r = relax_room_positions(relaxation_rooms, options.relaxation);
-  stats.relaxation_wall_thickness_m = r.wall_thickness_m;
-  stats.relaxation_pairs = static_cast<std::size_t>(r.same_side_pairs + r.two_face_pairs);
-  for (std::size_t k = 0; k < relaxation_placements.size(); ++k) {
-    const auto& [id, placement] = relaxation_placements[k];
-    const Pose2 relaxed = Pose2{r.shifts[k].x(), r.shifts[k].y(), 0.0}.compose(placement);
-    Asr asr = store.load(id);
-    // What the relaxation changes: the shift against where the room was placed on leaving it
-    // (its online translation, if any, is undone or kept as the relaxation decides).
-    const Point2 change = relaxed.translation() - asr.pose.translation();
-    if (!(change.norm() >= 1e-6)) continue;  // a micrometre: not a move (room 0, the anchor)
-    room_moves.emplace_back(id, relaxed.compose(asr.pose.inverse()));
-    asr.pose = relaxed;
-    store.save(asr);
-    graph.update_node({asr.id, asr.pose, asr.pose.transform(asr.reference_point)});
-    if (asr.parent) {
-      graph.add_edge({*asr.parent, asr.id, 1, asr.pose.transform(asr.reference_point)});
-    }
-    ++stats.relaxed_rooms;
-    stats.relaxation_abs_m += change.norm();
-    stats.relaxation_max_m = std::max(stats.relaxation_max_m, change.norm());
-  }
-  stats.localization_time_s += seconds_since(start);
-}
-
 Point2 Mapper::Impl::fix_at_door(const Exit& entry) {
   const std::optional<Point2> shift =
       doors.pass({entry.center, entry.width_m, entry.heading_rad, travel_m});
@@ -352,8 +307,8 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   if (options.localization == LocalizationKind::kEm && options.relaxation.enabled) {
     // Where the estimate's own continuity puts the room: the rooms after it were mapped from
     // there (a map-only shift is the relaxation's to decide again).
-    remember_for_relaxation(asr, trace_in,
-                            options.translation.moves_estimate ? placed : room_correction);
+    relaxation.remember(asr, accepted_walls(trace_in),
+                        options.translation.moves_estimate ? placed : room_correction);
   }
   // Everything mapped from here on is corrected too: the robot's estimate turns with the room.
   last_room_fix = options.translation.moves_estimate ? placed : room_correction;
@@ -472,7 +427,11 @@ std::optional<int> Mapper::finish() {
   if (!m.started) return std::nullopt;
   m.started = false;
   const std::optional<int> id = m.finish_room(m.last_time_s, std::nullopt);
-  if (m.relaxation_rooms.size() > 1) m.relax_rooms();
+  if (m.relaxation.rooms() > 1) {
+    const auto relax_start = std::chrono::steady_clock::now();
+    m.room_moves = m.relaxation.relax(m.store, m.graph, m.stats);
+    m.stats.localization_time_s += seconds_since(relax_start);
+  }
   // The last room's correction turns the robot's estimate too, as every room's does when the
   // robot leaves it: pose_estimate() is the end of the run as the whole map sees it.
   if (m.previous_odometry) m.last_estimate = m.estimate(*m.previous_odometry);

@@ -6,94 +6,14 @@
 #include <optional>
 
 #include "cogmap/mapper/mapper.h"
+#include "facade/mapper_test_support.h"
 
 namespace cogmap::mapper {
 namespace {
 
-/// Range along a ray to the nearest of `walls`, or nullopt beyond `max_range_m`.
-std::optional<double> cast(const Point2& origin, double heading_rad,
-                           const std::vector<Segment>& walls, double max_range_m) {
-  const Point2 d{std::cos(heading_rad), std::sin(heading_rad)};
-  double best = std::numeric_limits<double>::infinity();
-  for (const Segment& w : walls) {
-    const Point2 e = w.b - w.a;
-    const double denom = d.x() * e.y() - d.y() * e.x();
-    if (std::abs(denom) < 1e-12) continue;
-    const Point2 ao = w.a - origin;
-    const double t = (ao.x() * e.y() - ao.y() * e.x()) / denom;
-    const double u = (ao.x() * d.y() - ao.y() * d.x()) / denom;
-    if (t > 0.0 && u >= 0.0 && u <= 1.0) best = std::min(best, t);
-  }
-  if (best > max_range_m) return std::nullopt;
-  return best;
-}
-
-/// Frames of a robot driving the waypoints at 0.5 m/s with ideal sonar (axis ray only).
-/// `drift_rad_per_m` rotates the odometry heading in proportion to the distance driven;
-/// `slip_m_per_m` moves the odometry sideways (to the left of the heading) as it drives.
-std::vector<SensorFrame> drive(const std::vector<Point2>& waypoints,
-                               const std::vector<Segment>& walls, const RobotGeometry& robot,
-                               double drift_rad_per_m, double slip_m_per_m = 0.0) {
-  std::vector<SensorFrame> frames;
-  const double step_m = 0.05;  // 0.5 m/s at 10 Hz
-  double time_s = 0.0, travelled_m = 0.0;
-  Pose2 odom{waypoints[0].x(), waypoints[0].y(), 0.0};
-  for (std::size_t w = 1; w < waypoints.size(); ++w) {
-    const Point2 a = waypoints[w - 1], b = waypoints[w];
-    const double heading = std::atan2(b.y() - a.y(), b.x() - a.x());
-    const int steps = static_cast<int>(std::round((b - a).norm() / step_m));
-    for (int i = 1; i <= steps; ++i) {
-      const Point2 p = a + (b - a) * (static_cast<double>(i) / steps);
-      const Pose2 truth{p.x(), p.y(), heading};
-      travelled_m += step_m;
-      const double odom_heading = heading + drift_rad_per_m * travelled_m;
-      odom = {odom.x_m + step_m * (std::cos(odom_heading) - slip_m_per_m * std::sin(odom_heading)),
-              odom.y_m + step_m * (std::sin(odom_heading) + slip_m_per_m * std::cos(odom_heading)),
-              wrap_angle_rad(odom_heading)};
-      SensorFrame f;
-      time_s += 0.1;
-      f.time_s = time_s;
-      f.true_pose = truth;
-      // The odometry frame starts at the start pose, so the mapper's start pose is identity.
-      f.odometry = odom;
-      for (int s = 0; s < static_cast<int>(robot.sonars.size()); ++s) {
-        const SonarMount& m = robot.sonars[s];
-        const Point2 origin = truth.transform({m.x_m, m.y_m});
-        const auto r =
-            cast(origin, truth.theta_rad + m.heading_rad, walls, robot.sonar_max_range_m);
-        f.sonar.push_back({s, r.value_or(robot.sonar_max_range_m), r.has_value(), time_s});
-      }
-      frames.push_back(f);
-    }
-  }
-  return frames;
-}
-
-std::vector<Segment> rectangle(double x0, double y0, double x1, double y1) {
-  return {{{x0, y0}, {x1, y0}}, {{x1, y0}, {x1, y1}}, {{x1, y1}, {x0, y1}}, {{x0, y1}, {x0, y0}}};
-}
-
-double distance_to_walls(const Point2& p, const std::vector<Segment>& walls) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Segment& w : walls) best = std::min(best, distance_to_segment_m(p, w));
-  return best;
-}
-
-/// Median distance of 5 cm samples of the map to the true walls.
-double median_wall_error(const std::vector<Mapper::MapSegment>& map,
-                         const std::vector<Segment>& walls) {
-  std::vector<double> errors;
-  for (const auto& m : map) {
-    const int n = std::max(1, static_cast<int>(m.segment.length_m() / 0.05));
-    for (int i = 0; i <= n; ++i) {
-      const Point2 p = m.segment.a + (m.segment.b - m.segment.a) * (static_cast<double>(i) / n);
-      errors.push_back(distance_to_walls(p, walls));
-    }
-  }
-  if (errors.empty()) return std::numeric_limits<double>::infinity();
-  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-  return errors[errors.size() / 2];
-}
+using test::drive;
+using test::median_wall_error;
+using test::rectangle;
 
 TEST(Mapper, OneRoomBecomesOneAsrOnTheTrueWalls) {
   const RobotGeometry robot = p2at_geometry();
@@ -196,70 +116,6 @@ TEST(Mapper, FinishTurnsTheEstimateByTheLastRoomsCorrection) {
   EXPECT_LT(std::abs(after.theta_rad), std::abs(before.theta_rad));  // the true heading is 0
 }
 
-/// A 22 m corridor cut into 4 m ASRs while the odometry slips sideways 2 cm per metre (no
-/// heading drift): the walls of each cut lie 8 cm further off than the last cut's.
-struct SlipRun {
-  Pose2 final_estimate;
-  double median_wall_error_m = 0.0;
-  MapperStats stats;
-  std::vector<std::pair<int, Pose2>> moves;  ///< what the end-of-run relaxation re-placed
-};
-
-SlipRun map_slipping_corridor(bool translation, bool moves_estimate, bool relax = false) {
-  const RobotGeometry robot = p2at_geometry();
-  const std::vector<Segment> walls{{{-1.0, -1.2}, {25.0, -1.2}}, {{-1.0, 1.2}, {25.0, 1.2}}};
-  const auto frames = drive({{0.0, 0.0}, {22.0, 0.0}}, walls, robot, 0.0, 0.02);
-  MapperOptions options;
-  options.boundary = BoundaryKind::kDistance;
-  options.distance.asr_distance_m = 4.0;
-  options.translation.enabled = translation;
-  options.translation.moves_estimate = moves_estimate;
-  options.relaxation.enabled = relax;
-  MemoryAsrStore store;
-  Mapper mapper(options, robot, store, Pose2{});
-  for (const SensorFrame& f : frames) mapper.process(f);
-  SlipRun out;
-  mapper.finish();
-  out.final_estimate = mapper.pose_estimate();
-  out.median_wall_error_m = median_wall_error(mapper.master_map(true), walls);
-  out.stats = mapper.stats();
-  out.moves = mapper.room_moves();
-  for (const auto& [id, move] : out.moves) {
-    // The store and the graph hold the rooms where the relaxation put them.
-    const Asr stored = store.load(id);
-    const std::optional<AsrNode> node = mapper.graph().node(id);
-    EXPECT_TRUE(node && node->pose.x_m == stored.pose.x_m && node->pose.y_m == stored.pose.y_m);
-  }
-  return out;
-}
-
-TEST(Mapper, TranslationPlacesTheMapOnlyByDefault) {
-  EXPECT_TRUE(MapperOptions{}.translation.enabled);
-  EXPECT_FALSE(MapperOptions{}.translation.moves_estimate);
-}
-
-// Each cut is shifted back onto the corridor walls of the cuts before it: the map stays where
-// the first cut put it, while the estimate the robot steers by keeps odometry's slip unless the
-// shift is applied to it too.
-TEST(Mapper, TranslationPutsEachCutBackOnTheWallsSeenBefore) {
-  const SlipRun off = map_slipping_corridor(false, false);
-  const SlipRun map_only = map_slipping_corridor(true, false);
-  const SlipRun moved = map_slipping_corridor(true, true);
-  EXPECT_EQ(off.stats.translations, 0u);
-  EXPECT_EQ(map_only.stats.translations, 5u);  // 6 cuts, the first has no reference
-  // Without it the 44 cm of slip spreads the walls (measured 0.211 m); with it the map stays
-  // on them (0.051 m, the 10 cm cells' quantisation).
-  EXPECT_GT(off.median_wall_error_m, 0.18);
-  EXPECT_LT(map_only.median_wall_error_m, 0.065);
-  // The map only: the estimate is odometry's, 0.44 m to the left at the end.
-  EXPECT_NEAR(map_only.final_estimate.y_m, off.final_estimate.y_m, 1e-6);
-  EXPECT_NEAR(off.final_estimate.y_m, 0.44, 0.01);
-  // Moved too: the estimate is back near the corridor's centre line (measured 0.042 m: the
-  // last cut's own 8 cm of slip, half of it before its middle).
-  EXPECT_LT(std::abs(moved.final_estimate.y_m), 0.055);
-  EXPECT_LT(moved.median_wall_error_m, 0.065);
-}
-
 /// One 22 m corridor mapped as a single room (no doorway), odometry drifting `drift_rad_per_m`:
 /// the final heading estimate and the map, with or without in-room glimpses.
 struct CorridorRun {
@@ -287,31 +143,6 @@ CorridorRun map_one_room_corridor(bool glimpses, double drift_rad_per_m) {
   out.median_wall_error_m = median_wall_error(mapper.master_map(true), walls);
   out.stats = mapper.stats();
   return out;
-}
-
-TEST(Mapper, RelaxationIsOnByDefault) { EXPECT_TRUE(MapperOptions{}.relaxation.enabled); }
-
-// The same slipping corridor without the online translation: at the end of the run the cuts are
-// shifted together onto the walls they share, the estimate left as it was.
-TEST(Mapper, RelaxationPullsTheCutsOntoTheWallsTheyShare) {
-  const SlipRun off = map_slipping_corridor(false, false, false);
-  const SlipRun relaxed = map_slipping_corridor(false, false, true);
-  EXPECT_TRUE(off.moves.empty());
-  EXPECT_EQ(off.stats.relaxed_rooms, 0u);
-  // Cuts 1-5 move (room 0 stays where the start pose put it); across the corridor only.
-  ASSERT_EQ(relaxed.moves.size(), 5u);
-  EXPECT_EQ(relaxed.stats.relaxed_rooms, 5u);
-  for (const auto& [id, move] : relaxed.moves) {
-    EXPECT_GT(id, 0);
-    EXPECT_LT(move.y_m, 0.0);  // back towards the right: the odometry slipped to the left
-    EXPECT_NEAR(move.theta_rad, 0.0, 1e-12);
-  }
-  // 0.211 m without (measured) against 0.080 m: the pairs weigh against the drift the chain
-  // allows between 4 m cuts (0.064 m), so each cut keeps part of its slip.
-  EXPECT_GT(off.median_wall_error_m, 0.18);
-  EXPECT_LT(relaxed.median_wall_error_m, 0.10);
-  EXPECT_EQ(relaxed.final_estimate.y_m, off.final_estimate.y_m);
-  EXPECT_GT(relaxed.stats.relaxation_pairs, 5u);
 }
 
 TEST(Mapper, GlimpsesAreOffByDefault) { EXPECT_FALSE(MapperOptions{}.glimpse.enabled); }

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "cogmap/experiments/metrics.h"
@@ -103,8 +104,9 @@ class ErrorBreakdownBuilder {
 
   /// `room_to_world` is the finished room's asr.pose (local -> corrected world).
   void add_room(int id, const mapper::Pose2& room_to_world, const mapper::AsrTrace& trace);
-  /// Room `id` was re-placed: `move` (world -> world) applies to all its points.
-  void move_room(int id, const mapper::Pose2& move);
+  /// Rooms re-placed (Mapper::room_moves): each move (world -> world) applies to all the
+  /// points of its room.
+  void move_rooms(std::span<const std::pair<int, mapper::Pose2>> moves);
   void add_room_span(const RoomSpan& span) { spans_.push_back(span); }
 
   const SegmentIndex& truth_index() const { return truth_; }

@@ -15,6 +15,7 @@
 #include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/mapper/grid/grid_updater.h"
 #include "cogmap/mapper/localization/localizer.h"
+#include "cogmap/mapper/mapper.h"
 
 namespace cogmap::experiments {
 
@@ -97,6 +98,11 @@ struct RunMetrics {
   /// while the room is driven and mapped (simulation, navigation, mapping, metrics).
   std::vector<double> room_wall_s;
 };
+
+/// The relaxation block from the mapper's figures; none when the relaxation did not run
+/// (mapper.relax off, or no localisation).
+std::optional<RunMetrics::Relaxation> relaxation_metrics(const mapper::MapperOptions& options,
+                                                         const mapper::MapperStats& stats);
 
 /// The JSON text (2-space indent, keys in a fixed order, shortest round-trip doubles, null for
 /// undefined values). Everything outside "timing" is a pure function of the run's inputs.

@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cogmap/experiments/metrics.h"
@@ -46,6 +47,12 @@ struct NavTraceRow {
 void nav_trace_csv_chunks(std::span<const NavTraceRow> rows,
                           const std::function<void(std::string_view)>& emit,
                           std::size_t rows_per_chunk = 1024);
+
+/// Rooms re-placed after the room listener drew them (Mapper::room_moves, the end-of-run
+/// relaxation): each room's segments in `map` and its label in `labels` take its move.
+void move_rooms(std::span<const std::pair<int, mapper::Pose2>> moves,
+                std::vector<mapper::Mapper::MapSegment>& map,
+                std::vector<std::pair<int, mapper::Point2>>& labels);
 
 /// map_segments.csv / map_segments_odom.csv: `asr_id,x1_m,y1_m,x2_m,y2_m`, world frame.
 std::string segments_csv(std::span<const mapper::Mapper::MapSegment> segments);
