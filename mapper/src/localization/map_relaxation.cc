@@ -2,8 +2,9 @@
 // positions at the end of a run"): the rooms' shifts and one wall thickness as the unknowns of
 // a sparse least-squares problem. Rows: room 0 stays; consecutive rooms keep their offset
 // within the drift of the path between them; each pair of wall pieces that are the same wall
-// seen from the same side (offset 0) or the two faces of one wall (offset = the thickness)
-// says normal · (s_i − s_j) [+ thickness] = the offset measured.
+// seen from the same side (offset 0; or the next run of its line, measured at the nearer end)
+// or the two faces of one wall (offset = the thickness) says
+// normal · (s_i − s_j) [+ thickness] = the offset measured.
 
 #include "cogmap/mapper/localization/map_relaxation.h"
 

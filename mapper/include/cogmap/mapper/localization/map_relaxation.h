@@ -6,9 +6,10 @@
 /// reference, so the position drift of a branch stays in every room mapped after it. Here all
 /// rooms are unknowns together: consecutive rooms keep the offset the estimate gave them, within
 /// the drift of the path between them, and every pair of rooms that saw the same wall (from the
-/// same side) or the two faces of one wall (from the rooms either side of it) pulls them into
-/// agreement. A least-squares problem over the rooms' shifts, re-paired a few times.
-/// docs/algorithms.md, "Relaxing the rooms' positions at the end of a run".
+/// same side, or the next run of its line past a door) or the two faces of one wall (from the
+/// rooms either side of it) pulls them into agreement. A least-squares problem over the rooms'
+/// shifts, re-paired a few times. docs/algorithms.md, "Relaxing the rooms' positions at the end
+/// of a run".
 
 #include <span>
 #include <vector>
