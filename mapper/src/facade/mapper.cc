@@ -214,14 +214,8 @@ Pose2 Mapper::Impl::translate(const Asr& asr, const AsrTrace& trace, const Pose2
                               std::optional<Localization>& localized) {
   // The new room's accepted walls and path with EM's rotation applied, against the reference
   // rooms' walls (world frame, corrected).
-  std::vector<Polyline> walls = accepted_walls(trace);
-  for (Polyline& line : walls) {
-    for (Point2& p : line) p = rotated.transform(p);
-  }
-  std::vector<Point2> path;
-  for (const Point2& p : asr.path) path.push_back(rotated.transform(p));
-  const std::vector<FacingSegment> current =
-      facing_segments(walls, path, options.translation.min_segment_m);
+  const std::vector<FacingSegment> current = placed_facing_segments(
+      accepted_walls(trace), asr.path, rotated, options.translation.min_segment_m);
   std::vector<FacingSegment> reference;
   for (const std::vector<FacingSegment>& room_walls : resident_facing) {
     reference.insert(reference.end(), room_walls.begin(), room_walls.end());
@@ -304,24 +298,22 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
     stats.localization_time_s += seconds_since(shift_start);  // localisation, as EM's
   }
   asr.pose = placed;
-  if (options.localization == LocalizationKind::kEm && options.relaxation.enabled) {
-    // Where the estimate's own continuity puts the room: the rooms after it were mapped from
-    // there (a map-only shift is the relaxation's to decide again).
-    relaxation.remember(asr, accepted_walls(trace_in),
-                        options.translation.moves_estimate ? placed : room_correction);
-  }
   // Everything mapped from here on is corrected too: the robot's estimate turns with the room.
   last_room_fix = options.translation.moves_estimate ? placed : room_correction;
   correction = last_room_fix.compose(correction);
-  std::vector<Polyline> accepted_world = accepted_walls(trace_in);
+  const std::vector<Polyline> accepted = accepted_walls(trace_in);
+  if (options.localization == LocalizationKind::kEm && options.relaxation.enabled) {
+    // Where the estimate's own continuity puts the room: the rooms after it were mapped from
+    // there (a map-only shift is the relaxation's to decide again).
+    relaxation.remember(asr, accepted, last_room_fix);
+  }
+  std::vector<Polyline> accepted_world = accepted;
   for (Polyline& line : accepted_world) {
     for (Point2& p : line) p = asr.pose.transform(p);
   }
   if (options.translation.enabled) {
-    std::vector<Point2> path_world;
-    for (const Point2& p : asr.path) path_world.push_back(asr.pose.transform(p));
     resident_facing.push_back(
-        facing_segments(accepted_world, path_world, options.translation.min_segment_m));
+        placed_facing_segments(accepted, asr.path, asr.pose, options.translation.min_segment_m));
   }
   resident_accepted.push_back(std::move(accepted_world));
   const std::size_t keep = std::max<std::size_t>(options.localizer.reference_rooms, 1);

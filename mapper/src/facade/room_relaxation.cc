@@ -9,13 +9,9 @@ namespace cogmap::mapper::internal {
 
 void RoomRelaxation::remember(const Asr& asr, std::span<const Polyline> accepted_walls,
                               const Pose2& placement) {
-  std::vector<Polyline> walls(accepted_walls.begin(), accepted_walls.end());
-  for (Polyline& line : walls) {
-    for (Point2& p : line) p = placement.transform(p);
-  }
-  std::vector<Point2> path;
-  for (const Point2& p : asr.path) path.push_back(placement.transform(p));
-  rooms_.push_back({facing_segments(walls, path, options_.min_segment_m), path_length_m(asr.path)});
+  rooms_.push_back(
+      {placed_facing_segments(accepted_walls, asr.path, placement, options_.min_segment_m),
+       path_length_m(asr.path)});
   placements_.emplace_back(asr.id, placement);
 }
 

@@ -81,6 +81,19 @@ std::vector<FacingSegment> facing_segments(std::span<const Polyline> walls,
   return out;
 }
 
+std::vector<FacingSegment> placed_facing_segments(std::span<const Polyline> walls,
+                                                  std::span<const Point2> path, const Pose2& pose,
+                                                  double min_length_m) {
+  std::vector<Polyline> placed(walls.begin(), walls.end());
+  for (Polyline& line : placed) {
+    for (Point2& p : line) p = pose.transform(p);
+  }
+  std::vector<Point2> placed_path;
+  placed_path.reserve(path.size());
+  for (const Point2& p : path) placed_path.push_back(pose.transform(p));
+  return facing_segments(placed, placed_path, min_length_m);
+}
+
 TranslationFix estimate_translation(std::span<const FacingSegment> reference,
                                     std::span<const FacingSegment> current,
                                     const TranslationOptions& o) {

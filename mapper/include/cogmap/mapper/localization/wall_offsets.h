@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cogmap/mapper/seam/geometry.h"
+#include "cogmap/mapper/seam/pose2.h"
 
 namespace cogmap::mapper {
 
@@ -23,6 +24,12 @@ struct FacingSegment {
 /// there: a desk's face from the aisle, a corridor wall from the corridor). None without a path.
 std::vector<FacingSegment> facing_segments(std::span<const Polyline> walls,
                                            std::span<const Point2> path, double min_length_m);
+
+/// facing_segments of a room's `walls` and `path` (its local frame) placed in the world by
+/// `pose`.
+std::vector<FacingSegment> placed_facing_segments(std::span<const Polyline> walls,
+                                                  std::span<const Point2> path, const Pose2& pose,
+                                                  double min_length_m);
 
 struct TranslationOptions {
   /// On (default, measured on generated buildings: docs/algorithms.md): a revisited room is
