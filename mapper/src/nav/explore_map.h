@@ -51,6 +51,11 @@ class ExploreMap {
            (!seen({c.x + 1, c.y}) || !seen({c.x - 1, c.y}) || !seen({c.x, c.y + 1}) ||
             !seen({c.x, c.y - 1}));
   }
+  /// Forgets the echoes placed in `c` (the explorer's last resort reopens, on a copy, cells
+  /// another map shows open).
+  void clear_echoes(Cell c) {
+    if (inside(c)) hits_[index(c)] = 0.0f;
+  }
   /// Cells seen so far (grows as exploration goes on).
   std::size_t seen_count() const { return seen_count_; }
   /// Sonar readings integrated so far (valid ones, echo or not).

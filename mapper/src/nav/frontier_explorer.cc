@@ -12,6 +12,7 @@
 
 #include "nav/explore_budget.h"
 #include "nav/explore_map.h"
+#include "nav/explore_reopen.h"
 #include "nav/frontier_planner.h"
 #include "nav/route_follower.h"
 
@@ -98,10 +99,17 @@ class FrontierExplorer final : public Controller {
     }
     // The goal is kept while its frontier cell is one: re-choosing every cycle swings the
     // robot between nearly equal goals, and every turn costs heading.
-    if (goal_ && !map_.frontier(map_.cell_of(target_))) goal_.reset();
+    // (A goal planned through reopened cells is kept until it is reached or fails: its
+    // frontier may be one only on the reopened copy.)
+    if (goal_ && !goal_reopened_ && !map_.frontier(map_.cell_of(target_))) goal_.reset();
     if (!goal_) {
-      const auto plan =
+      goal_reopened_ = false;
+      auto plan =
           plan_to_frontier(map_, input.pose, banned_, options_.ban_radius_m, options_.frontier);
+      if (!plan && map_.readings() >= ring) {
+        plan = plan_through_reopened(input);
+        goal_reopened_ = plan.has_value();
+      }
       if (!plan) {
         // Nothing left to explore, unless the sonar has not yet been heard round once (a
         // real robot's sonar starts a moment after its motors): then wait, and decide later.
@@ -147,6 +155,21 @@ class FrontierExplorer final : public Controller {
     }
   }
 
+  /// The last look before stopping (FrontierOptions::reopen_echo_himm): a plan on a copy of
+  /// the explore map whose obstacle cells the current room's grid shows swept and silent are
+  /// free. At most reopen_plans in an exploration.
+  std::optional<FrontierPlan> plan_through_reopened(const NavInput& input) {
+    const FrontierOptions& o = options_.frontier;
+    if (input.grid == nullptr || o.reopen_echo_himm < 0.0 || reopen_plans_ >= o.reopen_plans) {
+      return std::nullopt;
+    }
+    ExploreMap reopened = map_;
+    if (reopen_swept_cells(reopened, *input.grid, o.reopen_echo_himm) == 0) return std::nullopt;
+    auto plan = plan_to_frontier(reopened, input.pose, banned_, options_.ban_radius_m, o);
+    if (plan) ++reopen_plans_;
+    return plan;
+  }
+
   VelocityCommand finish(bool complete) {
     finished_ = true;
     trace_.exploration_complete = complete;
@@ -168,6 +191,8 @@ class FrontierExplorer final : public Controller {
   std::optional<Point2> goal_;      // where the robot drives to see...
   Point2 target_{0.0, 0.0};         // ...this frontier cell,
   bool target_in_doorway_ = false;  // which lies in a doorway (a look bans only this side)
+  bool goal_reopened_ = false;      // planned through cells the room grid reopened
+  int reopen_plans_ = 0;            // such plans made so far
   double progress_s_ = 0.0;         // when the give-up clock last restarted
   double best_m_ = std::numeric_limits<double>::infinity();  // nearest to the goal so far
   std::size_t seen_at_progress_ = 0;

@@ -1,5 +1,8 @@
 #include "nav/frontier_planner.h"
 
+#include "nav/explore_reopen.h"
+#include "nav/fake_grid_updater.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -320,6 +323,36 @@ TEST(FrontierPlanner, ADoorwayPaintedNarrowIsTheLastResort) {
       plan_to_frontier(looked_through_door_map(), from, {}, 0.0, FrontierOptions{});
   ASSERT_TRUE(open.has_value());
   EXPECT_LE(open->goal.x(), 0.6) << describe(*open);
+}
+
+// The doorway painted shut altogether (its five cells at x = 1.0 obstacles, the far side seen
+// to x = 1.6 through it before the jambs' echoes closed it): nothing is reachable, until the
+// room grid, which saw beams pass through the door's cells and no echo there, reopens them
+// (FrontierOptions::reopen_echo_himm, the explorer's last look before it stops).
+TEST(FrontierPlanner, ADoorwayPaintedShutIsReopenedByTheRoomGrid) {
+  Scene scene;
+  scene.add_free(-10, -5, 4, 5);
+  scene.add_free(6, -2, 8, 2);
+  scene.add_open(9, -2, 9, 2);
+  ExploreMap map = scene.build();
+  const Pose2 from{-1.0, 0.0, 0.0};
+  ASSERT_FALSE(plan_to_frontier(map, from, {}, 0.0, FrontierOptions{}).has_value());
+  // The room grid: 0.1 m cells, unexplored but for the doorway, swept by beams (-1).
+  testing::FakeGridUpdater room(-3.0, -2.0, 6.0, 0.0f);
+  room.fill_box(0.9, -0.5, 1.1, 0.5, -1.0f);
+  const double echo_himm = FrontierOptions{}.reopen_echo_himm;
+  ExploreMap same = map;
+  EXPECT_EQ(reopen_swept_cells(same, room, echo_himm), 5u);  // the five door cells, no jamb
+  const std::optional<FrontierPlan> plan = plan_to_frontier(same, from, {}, 0.0, FrontierOptions{});
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_NEAR(plan->frontier.x(), 1.6, 1e-9) << describe(*plan);
+  expect_walkable_legs(same, from, *plan, FrontierOptions{}.max_leg_m);
+  // An echo on an axis in the doorway's middle cell (a post there) keeps that cell shut.
+  room.set(1.05, 0.05, 3.0f);
+  ExploreMap walled = map;
+  EXPECT_EQ(reopen_swept_cells(walled, room, echo_himm), 4u);
+  EXPECT_TRUE(walled.occupied(walled.cell_of(Point2(1.0, 0.0))));
+  EXPECT_FALSE(walled.occupied(walled.cell_of(Point2(1.0, 0.2))));
 }
 
 TEST(FrontierPlanner, AFrontierInTheOpenIsNoDoorway) {

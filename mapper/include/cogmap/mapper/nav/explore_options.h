@@ -73,6 +73,15 @@ struct FrontierOptions {
   /// doorway this clear (next to the obstacle cells of a door the jambs' echoes painted down to
   /// 0.4 m; the door behaviour then finds the real opening). Negative: no last resort.
   double doorway_goal_clearance_m = 0.15;
+  /// The last look before stopping, when no frontier is reachable: the explore map's obstacle
+  /// cells that the current room's grid holds as swept by a beam's axis (a cell below 0) and
+  /// not echoed (no cell at this HIMM value or above: one axis echo adds 3, a jamb's neighbour
+  /// 0.5 a reading) count as free for one more plan. The explore map paints every echo over
+  /// ±6° from up to 3 m, so a doorway passed by at 2-3 m is painted shut there while the room
+  /// grid, which paints the axis alone, keeps it open. Negative: off.
+  double reopen_echo_himm = 1.0;
+  int reopen_plans = 1;  ///< ...at most this many such plans in an exploration: the first
+                         ///< found the rooms (3 found no more and cost up to give_up_s each)
   double los_clearance_m = 0.4;  ///< a straight leg skips path cells while it keeps this
                                  ///< far from obstacles (or as far as the path did)
   double max_leg_m = 4.0;        ///< ...and is at most this long
