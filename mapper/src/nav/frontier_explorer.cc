@@ -55,6 +55,9 @@ class FrontierExplorer final : public Controller {
     const double now = input.frame->time_s;
     const Point2 here = input.pose.translation();
     if (budget_.spent(now, input.frame->odometry.translation())) return finish(false);
+    if (edge_active_) {
+      if (const auto cmd = edge_step(input)) return *cmd;
+    }
     // A position the map cannot hold (beyond max_span_m): stand, decide nothing.
     if (!map_.inside(map_.cell_of(here))) return stopped(NavMode::kIdle);
     const std::size_t ring = std::max<std::size_t>(robot.sonars.size(), 1);
@@ -114,6 +117,9 @@ class FrontierExplorer final : public Controller {
         // Nothing left to explore, unless the sonar has not yet been heard round once (a
         // real robot's sonar starts a moment after its motors): then wait, and decide later.
         if (map_.readings() < ring) return stopped(NavMode::kIdle);
+        if (walk_start_room_edge(now)) {
+          if (const auto cmd = edge_step(input)) return *cmd;
+        }
         return finish(true);
       }
       progress_s_ = now;
@@ -125,6 +131,7 @@ class FrontierExplorer final : public Controller {
     }
     const VelocityCommand cmd = follower_->step(input);
     trace_ = follower_->trace();
+    trace_.door_passages += edge_passages_;
     trace_.exploration_complete = false;
     return cmd;
   }
@@ -170,6 +177,46 @@ class FrontierExplorer final : public Controller {
     return plan;
   }
 
+  /// The start room's edge walk (ExploreOptions::start_room_edge_s): begins when no frontier
+  /// is left while no door has been passed, and resumes when a door it passed led to no new
+  /// frontier (a gap between furniture), until its time is up. True when it walks on.
+  bool walk_start_room_edge(double now) {
+    if (edge_) {
+      if (now - edge_start_s_ > options_.start_room_edge_s) return false;
+      edge_active_ = true;
+      return true;
+    }
+    if (options_.start_room_edge_s <= 0.0 || follower_->trace().door_passages > 0) return false;
+    ExploreOptions edge = options_;
+    edge.strategy = ExploreStrategy::kEdge;
+    edge.time_budget_s = 0.0;  // this explorer's budget still applies
+    edge.distance_budget_m = 0.0;
+    edge_ = make_edge_explorer(edge);
+    edge_start_s_ = now;
+    edge_active_ = true;
+    return true;
+  }
+
+  /// One cycle of the edge walk: its command, or nullopt when a door has just been passed (the
+  /// frontiers take over again). Round the room, or out of time, the exploration ends.
+  std::optional<VelocityCommand> edge_step(const NavInput& input) {
+    const VelocityCommand cmd = edge_->step(input);
+    const NavTrace& walked = edge_->trace();
+    if (walked.door_passages > edge_passages_) {
+      edge_passages_ = walked.door_passages;
+      edge_active_ = false;
+      goal_.reset();
+      return std::nullopt;
+    }
+    if (edge_->done() || input.frame->time_s - edge_start_s_ > options_.start_room_edge_s) {
+      edge_active_ = false;
+      return finish(true);
+    }
+    trace_ = walked;
+    trace_.exploration_complete = false;
+    return cmd;
+  }
+
   VelocityCommand finish(bool complete) {
     finished_ = true;
     trace_.exploration_complete = complete;
@@ -188,12 +235,16 @@ class FrontierExplorer final : public Controller {
   NavTrace trace_;
   bool finished_ = false;
   ExploreBudget budget_;
-  std::optional<Point2> goal_;      // where the robot drives to see...
-  Point2 target_{0.0, 0.0};         // ...this frontier cell,
-  bool target_in_doorway_ = false;  // which lies in a doorway (a look bans only this side)
-  bool goal_reopened_ = false;      // planned through cells the room grid reopened
-  int reopen_plans_ = 0;            // such plans made so far
-  double progress_s_ = 0.0;         // when the give-up clock last restarted
+  std::optional<Point2> goal_;        // where the robot drives to see...
+  Point2 target_{0.0, 0.0};           // ...this frontier cell,
+  bool target_in_doorway_ = false;    // which lies in a doorway (a look bans only this side)
+  bool goal_reopened_ = false;        // planned through cells the room grid reopened
+  int reopen_plans_ = 0;              // such plans made so far
+  std::unique_ptr<Controller> edge_;  // the start room's edge walk, once begun
+  bool edge_active_ = false;          // ...walking now (not between its doors' frontiers)
+  double edge_start_s_ = 0.0;
+  std::size_t edge_passages_ = 0;  // doors it passed
+  double progress_s_ = 0.0;        // when the give-up clock last restarted
   double best_m_ = std::numeric_limits<double>::infinity();  // nearest to the goal so far
   std::size_t seen_at_progress_ = 0;
   std::size_t skipped_seen_ = 0;

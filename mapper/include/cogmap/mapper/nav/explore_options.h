@@ -166,6 +166,14 @@ struct ExploreOptions {
   double look_hold_s = 1.0;           ///< arrived: hold still this long (two cycles of the
                                       ///< sonar ring, fired every ~0.4 s) before the frontier,
                                       ///< if still there, is given up
+  double start_room_edge_s = 150.0;   ///< frontier explorer: when no frontier is left and no
+                                      ///< door has been passed yet (still in the start room,
+                                      ///< its doorways painted shut), walk the room's edge as
+                                      ///< the edge explorer does, at most this long, before
+                                      ///< stopping; a door passed on the way resumes the
+                                      ///< frontiers (0 = stop at once). 150 s: one lap of a
+                                      ///< 10 x 8 m room at the edge walk's ~0.21 m/s
+                                      ///< (docs/algorithms.md, "The start room's edge walk")
   double time_budget_s = 0.0;         ///< stop after this long (0 = no budget); not complete
   double distance_budget_m = 0.0;     ///< stop after this much travel by the odometry (0 = no
                                       ///< budget); both budgets apply to every strategy
