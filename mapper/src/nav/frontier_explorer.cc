@@ -119,6 +119,7 @@ class FrontierExplorer final : public Controller {
         if (map_.readings() < ring) return stopped(NavMode::kIdle);
         if (walk_start_room_edge(now)) {
           if (const auto cmd = edge_step(input)) return *cmd;
+          return stopped(NavMode::kIdle);  // a door passed this very cycle: plan next cycle
         }
         return finish(true);
       }
