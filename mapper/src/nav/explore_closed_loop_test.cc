@@ -39,7 +39,7 @@ TEST(FrontierExplorerLoop, ExploresAClosedRoomAndStops) {
   const LoopRun r = drive(*c, box(0, 0, 5, 4), {1.0, 1.0, 0.3}, 400.0);
   EXPECT_TRUE(r.done);
   EXPECT_TRUE(r.complete);
-  EXPECT_LT(r.time_s, 52.0);  // 1.25x the 41.3 s measured
+  EXPECT_LT(r.time_s, 52.0);  // 45.8 s measured (2026-12-04; 41.3 s when set at 1.25x)
   // The body's half-diagonal is 0.4 m: the centre never came near enough to touch.
   EXPECT_GT(r.min_clearance_m, 0.4);
 }
