@@ -21,7 +21,8 @@ NavCore::NavCore(const CoreOptions& options)
       memory_(options.memory),
       field_(options.vfh, options.memory),
       vfh_(options.vfh),
-      recovery_(options.stuck_time_s, options.recovery) {}
+      recovery_(options.stuck_time_s, options.recovery),
+      turn_backs_(options.vfh) {}
 
 bool NavCore::sense(const NavInput& input, double goal_range_m) {
   if (input.frame == nullptr) return false;
@@ -80,7 +81,12 @@ VelocityCommand NavCore::drive_toward(const NavInput& input, double target_rad) 
   const std::optional<double> previous = trace_.mode == NavMode::kDrive && trace_.has_direction
                                              ? std::optional<double>(trace_.direction_rad)
                                              : std::nullopt;
-  const VfhChoice choice = vfh_.select(target_rad, input.pose.theta_rad, previous);
+  const double now_s = input.frame != nullptr ? input.frame->time_s : 0.0;
+  const VfhChoice choice = vfh_.select(target_rad, input.pose.theta_rad, previous,
+                                       turn_backs_.holding(now_s, target_rad));
+  if (choice.found && previous) {
+    turn_backs_.record(now_s, target_rad, *previous, choice.direction_rad);
+  }
   trace_.has_direction = choice.found;
   if (!choice.found) {
     // Boxed in: turn on the spot toward the least dense sector, hoping one opens.

@@ -12,6 +12,7 @@
 #include "nav/obstacle_memory.h"
 #include "nav/recovery.h"
 #include "nav/steering.h"
+#include "nav/turn_backs.h"
 
 namespace cogmap::mapper::nav {
 
@@ -58,7 +59,8 @@ class NavCore {
   /// `prefer_rad` (world); nullopt otherwise.
   std::optional<VelocityCommand> recover(const NavInput& input, double prefer_rad);
 
-  /// Drives toward the world direction `target_rad` through VFH and the front safety check.
+  /// Drives toward the world direction `target_rad` through VFH and the front safety check,
+  /// holding its way after repeated turn-backs (nav/turn_backs.h).
   VelocityCommand drive_toward(const NavInput& input, double target_rad);
 
   /// Steers straight at the world direction `target_rad` at up to `speed_mps`, without VFH
@@ -92,6 +94,7 @@ class NavCore {
   ObstacleField field_;
   Vfh vfh_;
   StuckRecovery recovery_;
+  TurnBacks turn_backs_;
   RobotGeometry robot_;
   double speed_mps_ = 0.0;
   double max_turn_radps_ = 0.0;

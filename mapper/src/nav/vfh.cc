@@ -165,8 +165,8 @@ double Vfh::side_switch_cost(double direction, double target_rad,
   return (prev_off > 0.0) != (off > 0.0) ? options_.side_switch_rad : 0.0;
 }
 
-VfhChoice Vfh::select(double target_rad, double heading_rad,
-                      std::optional<double> previous_rad) const {
+VfhChoice Vfh::select(double target_rad, double heading_rad, std::optional<double> previous_rad,
+                      bool hold_way) const {
   const int n = sector_count();
   const int blocked_count = static_cast<int>(std::count(blocked_.begin(), blocked_.end(), 1));
   if (blocked_count == n) return {};
@@ -176,6 +176,13 @@ VfhChoice Vfh::select(double target_rad, double heading_rad,
   while (!blocked_[start]) ++start;
   VfhChoice best;
   double best_cost = 0.0;
+  const auto turn_back_cost = [&](double direction) {
+    if (!hold_way || !previous_rad ||
+        std::abs(wrap_angle_rad(direction - *previous_rad)) <= 0.5 * kPi) {
+      return 0.0;
+    }
+    return options_.turn_back_cost_rad;
+  };
   const auto consider = [&](double direction, int width) {
     const double cost =
         std::abs(wrap_angle_rad(direction - target_rad)) +
@@ -183,7 +190,7 @@ VfhChoice Vfh::select(double target_rad, double heading_rad,
         (previous_rad
              ? options_.previous_weight * std::abs(wrap_angle_rad(direction - *previous_rad))
              : 0.0) +
-        side_switch_cost(direction, target_rad, previous_rad);
+        side_switch_cost(direction, target_rad, previous_rad) + turn_back_cost(direction);
     if (!best.found || cost < best_cost) {
       best_cost = cost;
       best = {true, wrap_angle_rad(direction), width};

@@ -145,6 +145,16 @@ inline DoorOptions explorer_door_options() {
   return o;
 }
 
+/// The explorer's VfhOptions: turn-backs are not held (turn_back_limit 0). On 304
+/// explorations the hold entered 1 659 rooms against 1 673 with the same contacts: the
+/// explorer re-plans its goal, and so the direction VFH aims at, every few seconds
+/// (docs/algorithms.md, "Turn-backs held").
+inline VfhOptions explorer_vfh_options() {
+  VfhOptions o;
+  o.turn_back_limit = 0;
+  return o;
+}
+
 struct ExploreOptions {
   ExploreStrategy strategy = ExploreStrategy::kFrontier;
   EdgeOptions edge;
@@ -180,7 +190,7 @@ struct ExploreOptions {
   // Every strategy:
   double speed_mps = 0.5;  ///< thesis §4: 0.5 m/s
   double max_turn_rate_radps = 1.0;
-  VfhOptions vfh;
+  VfhOptions vfh = explorer_vfh_options();
   double stuck_time_s = 4.0;  ///< no progress for this long triggers recovery
   MemoryOptions memory;
   SafetyOptions safety;

@@ -41,6 +41,20 @@ struct VfhOptions {
                                   ///< sonar (MemoryOptions) alone decides there, because the
                                   ///< grid's 30° angular smear closes 1 m doorways (docs);
                                   ///< used only while some echo is remembered
+  /// Turn-backs held (nav/turn_backs.h): after turn_back_limit choices within
+  /// turn_back_window_s that each leave last cycle's direction by more than 90° (a turn on
+  /// the spot back the way the robot came), toward one target, a candidate more than 90° from
+  /// last cycle's direction costs turn_back_cost_rad more for turn_back_hold_s: VFH follows
+  /// the obstacle round instead of swinging between two valleys. 0 disables (the explorer's
+  /// default, explorer_vfh_options). Measured on 1 680 generated routes (docs/algorithms.md,
+  /// "Turn-backs held"): completed 1 518 -> 1 531, waypoints given up 416 -> 390, contact
+  /// episodes 192 -> 164.
+  int turn_back_limit = 2;             ///< one turn-back is a dead end left; two, a limit cycle
+  double turn_back_window_s = 20.0;    ///< a turn-back takes 3-5 s of turning and ~1 m of driving
+  double turn_back_hold_s = 20.0;      ///< walking round a desk or along a room's wall (40 s: the
+                                       ///< same routes completed, docs)
+  double turn_back_cost_rad = 3.2;     ///< > π: any valley ahead is taken first
+  double turn_back_target_deg = 45.0;  ///< the target swinging more than this is a new one
 };
 
 /// Short-term obstacle memory: raw sonar echoes of the last seconds in the estimate frame,

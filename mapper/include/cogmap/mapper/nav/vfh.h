@@ -44,9 +44,11 @@ class Vfh {
   /// With `previous_rad` (last cycle's choice) the cost gains previous_weight·|previous - c|
   /// (VFH+'s μ3): near a wall the two valley edges cost about the same, and without it the
   /// choice flips between them every few cycles (the robot swings left and right in front of
-  /// a doorway). It also gains VfhOptions::side_switch_rad for leaving the side of a detour.
+  /// a doorway). It also gains VfhOptions::side_switch_rad for leaving the side of a detour,
+  /// and with `hold_way` (after repeated turn-backs, nav/turn_backs.h) a candidate more than
+  /// 90° from `previous_rad` gains VfhOptions::turn_back_cost_rad.
   VfhChoice select(double target_rad, double heading_rad,
-                   std::optional<double> previous_rad = std::nullopt) const;
+                   std::optional<double> previous_rad = std::nullopt, bool hold_way = false) const;
   /// select() with the heading equal to the target (no turning preference).
   VfhChoice select(double target_rad) const { return select(target_rad, target_rad); }
 
