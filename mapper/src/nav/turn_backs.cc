@@ -6,11 +6,9 @@
 #include "cogmap/mapper/seam/pose2.h"
 
 namespace cogmap::mapper::nav {
-namespace {
-
-constexpr double kTurnBackRad = 0.5 * std::numbers::pi;  // a new choice this far off turns back
-
-}  // namespace
+bool turns_back(double from_rad, double to_rad) {
+  return std::abs(wrap_angle_rad(to_rad - from_rad)) > 0.5 * std::numbers::pi;
+}
 
 bool TurnBacks::same_target(double target_rad) const {
   return has_target_ && std::abs(wrap_angle_rad(target_rad - target_rad_)) <=
@@ -26,7 +24,7 @@ void TurnBacks::record(double time_s, double target_rad, double previous_rad,
     turn_back_times_s_.clear();
     hold_until_s_ = -1.0;
   }
-  if (std::abs(wrap_angle_rad(direction_rad - previous_rad)) <= kTurnBackRad) return;
+  if (!turns_back(previous_rad, direction_rad)) return;
   turn_back_times_s_.push_back(time_s);
   while (time_s - turn_back_times_s_.front() > options_.turn_back_window_s) {
     turn_back_times_s_.pop_front();

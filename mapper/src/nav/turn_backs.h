@@ -16,6 +16,9 @@
 
 namespace cogmap::mapper::nav {
 
+/// A choice of `to_rad` after `from_rad` turns back: more than 90° from it.
+bool turns_back(double from_rad, double to_rad);
+
 class TurnBacks {
  public:
   explicit TurnBacks(const VfhOptions& options) : options_(options) {}

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "cogmap/mapper/grid/grid.h"
+#include "nav/turn_backs.h"
 
 namespace cogmap::mapper::nav {
 namespace {
@@ -177,11 +178,9 @@ VfhChoice Vfh::select(double target_rad, double heading_rad, std::optional<doubl
   VfhChoice best;
   double best_cost = 0.0;
   const auto turn_back_cost = [&](double direction) {
-    if (!hold_way || !previous_rad ||
-        std::abs(wrap_angle_rad(direction - *previous_rad)) <= 0.5 * kPi) {
-      return 0.0;
-    }
-    return options_.turn_back_cost_rad;
+    return hold_way && previous_rad && turns_back(*previous_rad, direction)
+               ? options_.turn_back_cost_rad
+               : 0.0;
   };
   const auto consider = [&](double direction, int width) {
     const double cost =
