@@ -217,6 +217,13 @@ TEST(ExperimentConfig, DoorSearchIsTheControllersDefaultUnlessSet) {
   EXPECT_NE(error_of(p, {"controller.door_search=sometimes"}), "no error");
 }
 
+TEST(ExperimentConfig, GrazingWallsAreOffUnlessAskedFor) {
+  const fs::path p = write_temp("good_grazing_walls.yaml", kGood);
+  EXPECT_FALSE(load_experiment(p, {}).controller.grazing_walls);
+  EXPECT_TRUE(load_experiment(p, {"controller.grazing_walls=true"}).controller.grazing_walls);
+  EXPECT_NE(error_of(p, {"controller.grazing_walls=7"}), "no error");
+}
+
 TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
   std::string text = kGood;
   text.replace(text.find("  cell_scale_mm"), 15, "  cell_scale_nm");

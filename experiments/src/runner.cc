@@ -58,6 +58,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       o.speed_mps = c.speed_mps;
       o.waypoint_tolerance_m = c.waypoint_tolerance_m;
       if (c.door_search && !*c.door_search) o.door.search_per_waypoint = 0;
+      o.door.cross_side_walls.enabled = c.grazing_walls;
       return mapper::nav::make_route_follower(o, c.waypoints);
     }
     case ControllerKind::kExplore: {
@@ -71,6 +72,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
         o.door.search_per_waypoint =
             *c.door_search ? mapper::nav::DoorOptions{}.search_per_waypoint : 0;
       }
+      o.door.cross_side_walls.enabled = c.grazing_walls;
       return mapper::nav::make_explorer(o);
     }
     case ControllerKind::kNone:

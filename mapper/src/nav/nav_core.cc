@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "nav/side_walls.h"
 #include "nav/spin_guard.h"
 #include "nav/steering.h"
 
@@ -117,14 +118,23 @@ VelocityCommand NavCore::drive_direct(const NavInput& input, double target_rad, 
   // jambs sit inside the ±30° cone but beside the lane.
   const double half_lane =
       0.5 * robot_.width_m + (options_.vfh.safety_radius_m - 0.5 * robot_.width_m) * 0.5;
-  const double lane = lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane,
-                                       robot_.length_m, door_band);
+  // A wall closed in on at a grazing angle is silent ahead of the body: its line through the
+  // side echoes stops the crossing where it enters the lane (side_walls.h).
+  const SideWallOptions& walls = options_.cross_side_walls;
+  const double side_wall_m = lane_clearance_m(
+      side_wall_points(field_.points(), input.pose.theta_rad, 0.5 * robot_.length_m,
+                       0.5 * robot_.width_m, walls),
+      input.pose.theta_rad, 0.5 * robot_.width_m + walls.lane_margin_m, robot_.length_m);
+  const double lane =
+      std::min(side_wall_m, lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane,
+                                             robot_.length_m, door_band));
   const VelocityCommand outside = steer(error, lane, speed, max_turn_radps_, options_.safety);
   if (door_band == nullptr) return sent(outside);
   // What lies in the door's band is the jambs (and their smear): the body passes between
   // them, so it may close in on them to the crossing's own, shorter, stop distance.
-  const double in_band =
-      lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane, robot_.length_m, nullptr);
+  const double in_band = std::min(
+      side_wall_m,
+      lane_clearance_m(field_.points(), input.pose.theta_rad, half_lane, robot_.length_m, nullptr));
   SafetyOptions safety = options_.safety;
   safety.stop_clearance_m = options_.cross_stop_clearance_m;
   safety.slow_clearance_m = options_.cross_slow_clearance_m;

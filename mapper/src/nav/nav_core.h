@@ -27,6 +27,7 @@ struct CoreOptions {
   RecoveryOptions recovery;
   double cross_stop_clearance_m = 0.25;  ///< DoorOptions: the crossing's front check on the
   double cross_slow_clearance_m = 0.6;   ///< points in the door's band
+  SideWallOptions cross_side_walls;      ///< DoorOptions: grazing walls while crossing
 };
 
 /// The shared options of a behaviour's options (RouteOptions, ExploreOptions: same names).
@@ -40,7 +41,8 @@ CoreOptions core_options_of(const BehaviourOptions& o) {
           o.safety,
           o.recovery,
           o.door.cross_stop_clearance_m,
-          o.door.cross_slow_clearance_m};
+          o.door.cross_slow_clearance_m,
+          o.door.cross_side_walls};
 }
 
 class NavCore {

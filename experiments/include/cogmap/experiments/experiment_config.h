@@ -50,6 +50,10 @@ struct ControllerConfig {
   /// `door_search`: sweep a wall for its door when the probe stalls (DoorOptions); unset =
   /// the controller's default (on for route, off for explore; docs/algorithms.md).
   std::optional<bool> door_search;
+  /// `grazing_walls`: while crossing a doorway, a wall closed in on at a grazing angle, seen
+  /// only by the side transducers, stops the crossing (DoorOptions::cross_side_walls; off by
+  /// default, docs/algorithms.md "Walls met at a grazing angle").
+  bool grazing_walls = false;
 };
 
 /// Bounds on what an experiment may ask for (docs/reliability.md "Limits"): beyond them a
