@@ -2,9 +2,9 @@
 /// Walls met at a grazing angle. The calibrated sonar hears a wall only within 40-60° of its
 /// normal (docs/sonar-model.md), so a wall the robot closes in on at a shallow angle is silent
 /// to the transducers that look ahead and heard only by the side ones, beside the body. The
-/// forward checks (front clearance, the crossing's lane) would then find the lane clear until
-/// a corner touches the wall. A straight line through the side echoes beside the body, carried
-/// on ahead, is where that wall goes.
+/// door crossing's lane check (NavCore::drive_direct) would then find the lane clear until a
+/// corner touches the wall. A straight line through the side echoes beside the body, carried
+/// on ahead, is where that wall goes (DoorOptions::cross_side_walls, off by default).
 
 #include <vector>
 
