@@ -119,12 +119,12 @@ struct RecoveryOptions {
 /// echoes beside the body, fitted with a line and carried on ahead, count for the crossing's
 /// lane check. The calibrated sonar hears a painted wall only within 40-60° of its normal
 /// (docs/sonar-model.md), so a wall the body closes in on at less than ~35° is silent to the
-/// transducers that look ahead. Off by default: on 3 244 generated routes it cut contact
-/// episodes 280 -> 106 (runs with one 114 -> 62) and completed 2 921 routes against 2 944, but
-/// on the shipped three-room route, seeds 1-5, EM's mean corrected heading error came out
-/// 4.87° against odometry's 4.72° (seeds 1-20: 3.72 -> 3.53°), which issue 10 forbids
-/// (docs/algorithms.md, "Walls met at a grazing angle"). `controller.grazing_walls: true`
-/// turns it on.
+/// transducers that look ahead. Off by default: on 1 564 generated and shipped routes drawn
+/// after it was chosen it cut contact episodes 116 -> 63 (runs with one 51 -> 35) and completed
+/// 1 396 routes against 1 413, but on the shipped three-room route, seeds 1-5, EM's mean
+/// corrected heading error came out 4.87° against odometry's 4.72° (seeds 1-20: 3.72 ->
+/// 3.53°), which issue 10 forbids (docs/algorithms.md, "Walls met at a grazing angle").
+/// `controller.grazing_walls: true` turns it on.
 struct SideWallOptions {
   bool enabled = false;
   double reach_m = 0.5;         ///< echoes up to this far out from the body's side, and this far
