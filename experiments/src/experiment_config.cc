@@ -197,6 +197,14 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "glimpse_turn_deg",
                      "glimpse_min_wall_m",
                      "glimpse_min_total_wall_m",
+                     "scan_match",
+                     "scan_match_interval_m",
+                     "scan_match_interval_deg",
+                     "scan_match_correlated_echoes",
+                     "scan_match_memory_readings",
+                     "scan_match_min_window_echoes",
+                     "scan_match_sigma_m",
+                     "scan_match_rotation",
                      "door_fix",
                      "door_fix_radius_m",
                      "door_fix_drift_sd_per_m",
@@ -294,6 +302,33 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "glimpse_min_wall_m", 0.0, 100.0, o.glimpse.min_wall_length_m);
   o.glimpse.min_total_wall_m =
       number_in(block, "glimpse_min_total_wall_m", 0.0, 1000.0, o.glimpse.min_total_wall_m);
+  o.scan_match.enabled = block.get_or<bool>("scan_match", o.scan_match.enabled);
+  o.scan_match.rotation = block.get_or<bool>("scan_match_rotation", o.scan_match.rotation);
+  o.scan_match.interval_m =
+      number_in(block, "scan_match_interval_m", 0.1, 100.0, o.scan_match.interval_m);
+  o.scan_match.interval_rad = number_in(block, "scan_match_interval_deg", 1.0, 1e6,
+                                        o.scan_match.interval_rad * 180.0 / std::numbers::pi) *
+                              std::numbers::pi / 180.0;
+  o.scan_match.correlated_echoes =
+      number_in(block, "scan_match_correlated_echoes", 1.0, 1000.0, o.scan_match.correlated_echoes);
+  o.scan_match.sigma_m = number_in(block, "scan_match_sigma_m", 0.02, 1.0, o.scan_match.sigma_m);
+  // Whole numbers ("expected an integer" otherwise): a window below the 30 matched echoes a
+  // match needs could never measure, and every match redraws the whole memory (20 000 readings
+  // are seven minutes of the ring).
+  if (const auto n = block.child("scan_match_min_window_echoes")) {
+    const int echoes = n->as<int>();
+    if (echoes < 30 || echoes > 100000) {
+      n->fail("scan_match_min_window_echoes must be in [30, 100000]");
+    }
+    o.scan_match.min_window_echoes = static_cast<std::size_t>(echoes);
+  }
+  if (const auto n = block.child("scan_match_memory_readings")) {
+    const int readings = n->as<int>();
+    if (readings < 100 || readings > 20000) {
+      n->fail("scan_match_memory_readings must be in [100, 20000]");
+    }
+    o.scan_match.memory_readings = static_cast<std::size_t>(readings);
+  }
   o.door_fix.enabled = block.get_or<bool>("door_fix", o.door_fix.enabled);
   o.door_fix.match_radius_m =
       number_in(block, "door_fix_radius_m", 0.05, 10.0, o.door_fix.match_radius_m);

@@ -113,6 +113,28 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NE(error_of(p, {"mapper.em_reference_rooms=2.5"}).find("expected an integer"),
             std::string::npos);
   EXPECT_NE(error_of(p, {"mapper.glimpse_distance_m=0.1"}), "no error");
+  // Scan matching: off; 1 m or half a radian, 100 echoes, 3 000 readings of memory unless set.
+  EXPECT_FALSE(defaults.mapper.scan_match.enabled);
+  EXPECT_EQ(defaults.mapper.scan_match.min_window_echoes, 100u);
+  const Experiment matched = load_experiment(
+      p, {"mapper.scan_match=true", "mapper.scan_match_interval_m=2",
+          "mapper.scan_match_interval_deg=45", "mapper.scan_match_min_window_echoes=150",
+          "mapper.scan_match_memory_readings=6000", "mapper.scan_match_correlated_echoes=5",
+          "mapper.scan_match_sigma_m=0.15", "mapper.scan_match_rotation=false"});
+  EXPECT_TRUE(matched.mapper.scan_match.enabled);
+  EXPECT_DOUBLE_EQ(matched.mapper.scan_match.interval_m, 2.0);
+  EXPECT_NEAR(matched.mapper.scan_match.interval_rad, std::numbers::pi / 4.0, 1e-12);
+  EXPECT_EQ(matched.mapper.scan_match.min_window_echoes, 150u);
+  EXPECT_EQ(matched.mapper.scan_match.memory_readings, 6000u);
+  EXPECT_DOUBLE_EQ(matched.mapper.scan_match.correlated_echoes, 5.0);
+  EXPECT_DOUBLE_EQ(matched.mapper.scan_match.sigma_m, 0.15);
+  EXPECT_FALSE(matched.mapper.scan_match.rotation);
+  EXPECT_NE(error_of(p, {"mapper.scan_match_min_window_echoes=10"}).find("[30, 100000]"),
+            std::string::npos);
+  EXPECT_NE(error_of(p, {"mapper.scan_match_memory_readings=1.5"}).find("expected an integer"),
+            std::string::npos);
+  EXPECT_NE(error_of(p, {"mapper.scan_match_memory_readings=50000"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.scan_match_sigma_m=0"}), "no error");
   // Position fixes at doorways passed again: on, 0.8 m, 0.016 m per metre unless set.
   EXPECT_TRUE(defaults.mapper.door_fix.enabled);
   EXPECT_DOUBLE_EQ(defaults.mapper.door_fix.match_radius_m, 0.8);

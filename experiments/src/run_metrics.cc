@@ -168,6 +168,12 @@ std::string metrics_json_text(const RunMetrics& m) {
                        {"wall_thickness_m", m.relaxation->wall_thickness_m},
                        {"pairs", m.relaxation->pairs}};
   }
+  if (m.scan_match) {
+    j["scan_match"] = {{"matches", m.scan_match->matches},
+                       {"measured", m.scan_match->measured},
+                       {"rotation_total_deg", m.scan_match->rotation_total_deg},
+                       {"shift_total_m", m.scan_match->shift_total_m}};
+  }
   Json rooms = Json::array();
   for (const RoomReport& r : m.rooms) {
     Json localization(nullptr);

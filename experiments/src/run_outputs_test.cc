@@ -158,6 +158,17 @@ TEST(RunMetrics, PerRoomMappingTimeIsInMillisecondsUnderTiming) {
   EXPECT_TRUE(nlohmann::json::parse(metrics_json_text(m))["timing"]["room_wall_ms"].empty());
 }
 
+TEST(RunMetrics, TheScanMatchBlockIsWrittenOnlyWhenMatching) {
+  RunMetrics m;
+  EXPECT_FALSE(nlohmann::json::parse(metrics_json_text(m)).contains("scan_match"));
+  m.scan_match = RunMetrics::ScanMatch{310, 204, 96.5, 4.25};
+  const auto j = nlohmann::json::parse(metrics_json_text(m))["scan_match"];
+  EXPECT_EQ(j["matches"].get<int>(), 310);
+  EXPECT_EQ(j["measured"].get<int>(), 204);
+  EXPECT_DOUBLE_EQ(j["rotation_total_deg"].get<double>(), 96.5);
+  EXPECT_DOUBLE_EQ(j["shift_total_m"].get<double>(), 4.25);
+}
+
 TEST(RunMetrics, EachRoomSaysWhatEmMeasuredInDegrees) {
   mapper::Localization fix;
   fix.measured_rotation_rad = -0.1;

@@ -55,6 +55,11 @@ struct Mapper::Impl {
   std::deque<std::vector<Polyline>> glimpse_walls;
   /// Variance of the heading error left after the last glimpse or room correction, rad².
   double glimpse_variance_rad2 = 0.0;
+  ScanMatcher scan_match;  ///< options.scan_match
+  /// Variances of the estimate's heading (rad²) and position (m² per axis) against the scan
+  /// matcher's memory after its last match.
+  double scan_rotation_var_rad2 = 0.0;
+  double scan_shift_var_m2 = 0.0;
   OdometryRecalibrator recalibrator;
   std::optional<Pose2> previous_odometry;
   AsrGraph graph;
@@ -107,6 +112,7 @@ struct Mapper::Impl {
                 opts.grid_options.cell_scale_mm / 2000.0),
         doors(opts.door_fix),
         relaxation(opts.relaxation),
+        scan_match(opts.scan_match, geometry),
         recalibrator(applied_curvature_gain(opts.odometry_calibration, geometry),
                      geometry.odometry_track_m) {
     options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
@@ -129,6 +135,7 @@ struct Mapper::Impl {
       const Pose2 at = interpolate(previous, pose, t);
       if (room.grid().integrate(at, reading)) ++stats.readings_used;
       if (options.glimpse.enabled) glimpse.integrate(at, reading);
+      if (options.scan_match.enabled) scan_match.add(at, reading, room.id());
     }
     stats.rejected = rejected_in_finished_rooms + room.grid().rejected();
     stats.peak_grid_bytes = std::max(stats.peak_grid_bytes, room.grid().grid_bytes());
@@ -136,6 +143,8 @@ struct Mapper::Impl {
 
   /// A glimpse is due: measure its rotation against the mapped walls and turn the estimate.
   void finish_glimpse(const Pose2& pose);
+  /// A scan match is due: match the newest echoes against the memory and move the estimate.
+  void finish_scan_match(const Pose2& pose);
 
   std::optional<int> finish_room(double time_s, const std::optional<BoundaryEvent>& leaving);
   /// A doorway passed (the entry of the room just begun, corrected estimate frame): with
@@ -180,6 +189,31 @@ void Mapper::Impl::finish_glimpse(const Pose2& pose) {
     glimpse_walls.push_back(std::move(fix.walls));
     if (glimpse_walls.size() > options.glimpse.reference_glimpses) glimpse_walls.pop_front();
   }
+}
+
+void Mapper::Impl::finish_scan_match(const Pose2& pose) {
+  // Odometry's drift since the last match: the turns' share and the random walk of the
+  // distance (the model's floor is a room's, not a metre's).
+  const HeadingDriftModel& drift = options.localizer.drift;
+  const double turned = scan_match.turned_rad(), travelled = scan_match.travelled_m();
+  const double rotation_drift = drift.per_rad_turned * drift.per_rad_turned * turned * turned +
+                                drift.rad_per_sqrt_m * drift.rad_per_sqrt_m * travelled;
+  const double rotation_prior = scan_rotation_var_rad2 + rotation_drift;
+  // Position: odometry's distance error, and the heading's error swept over the distance.
+  const double per_m = options.scan_match.shift_drift_per_m;
+  const double shift_prior =
+      scan_shift_var_m2 + (per_m * per_m + rotation_prior) * travelled * travelled;
+  const auto start = std::chrono::steady_clock::now();
+  const ScanMatchFix fix = scan_match.match(pose, rotation_prior, shift_prior);
+  stats.localization_time_s += seconds_since(start);
+  ++stats.scan_matches;
+  scan_rotation_var_rad2 = fix.rotation_var_rad2;
+  scan_shift_var_m2 = fix.shift_var_m2;
+  if (!fix.measured) return;
+  ++stats.scan_matches_measured;
+  correction = fix.transform().compose(correction);
+  stats.scan_match_rotation_abs_rad += std::abs(fix.rotation_rad);
+  stats.scan_match_shift_abs_m += fix.shift_m.norm();
 }
 
 Localization Mapper::Impl::localize(const Asr& asr, const AsrTrace& trace) const {
@@ -238,6 +272,7 @@ Point2 Mapper::Impl::fix_at_door(const Exit& entry) {
       doors.pass({entry.center, entry.width_m, entry.heading_rad, travel_m});
   if (!shift) return Point2::Zero();
   correction = Pose2{shift->x(), shift->y(), 0.0}.compose(correction);
+  if (options.scan_match.enabled) scan_match.shift_all(*shift);
   ++stats.door_fixes;
   stats.door_fix_abs_m += shift->norm();
   return *shift;
@@ -301,6 +336,7 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   // Everything mapped from here on is corrected too: the robot's estimate turns with the room.
   last_room_fix = options.translation.moves_estimate ? placed : room_correction;
   correction = last_room_fix.compose(correction);
+  if (options.scan_match.enabled) scan_match.move_room(asr.id, last_room_fix);
   const std::vector<Polyline> accepted = accepted_walls(trace_in);
   if (options.localization == LocalizationKind::kEm && options.relaxation.enabled) {
     // Where the estimate's own continuity puts the room: the rooms after it were mapped from
@@ -365,6 +401,10 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   }
   m.room.visit(pose);
   m.integrate(frame, pose);
+  if (m.options.scan_match.enabled && m.scan_match.visit(pose, turned_rad)) {
+    m.finish_scan_match(pose);
+    pose = m.estimate(odometry);
+  }
   if (m.options.glimpse.enabled && m.glimpse.visit(pose, turned_rad)) {
     m.finish_glimpse(pose);
     pose = m.estimate(odometry);

@@ -124,12 +124,15 @@ struct CorridorRun {
   MapperStats stats;
 };
 
-CorridorRun map_one_room_corridor(bool glimpses, double drift_rad_per_m) {
+CorridorRun map_one_room_corridor(bool glimpses, double drift_rad_per_m, bool scan_match = false,
+                                  double drift_model_rad_per_sqrt_m = 0.005) {
   const RobotGeometry robot = p2at_geometry();
   const std::vector<Segment> walls{{{-1.0, -1.2}, {25.0, -1.2}}, {{-1.0, 1.2}, {25.0, 1.2}}};
   const auto frames = drive({{0.0, 0.0}, {22.0, 0.0}}, walls, robot, drift_rad_per_m);
   MapperOptions options;
   options.glimpse.enabled = glimpses;
+  options.scan_match.enabled = scan_match;
+  options.localizer.drift.rad_per_sqrt_m = drift_model_rad_per_sqrt_m;
   // EM as the glimpses were measured with: the gate alone, against the last 2 rooms (with the
   // posterior mean each glimpse's correction is shrunk toward the odometry prior).
   options.localizer.prior_shrinks = false;
@@ -166,6 +169,35 @@ TEST(Mapper, GlimpsesLeaveAnUndriftedHeadingAlone) {
   EXPECT_GE(glimpses.stats.glimpses, 5u);
   // Straight walls seen without drift measure no rotation: the estimate stays on odometry.
   EXPECT_LT(std::abs(glimpses.final_heading_rad), 0.2 * std::numbers::pi / 180.0);
+}
+
+TEST(Mapper, ScanMatchingIsOffByDefault) { EXPECT_FALSE(MapperOptions{}.scan_match.enabled); }
+
+TEST(Mapper, ScanMatchingTurnsTheHeadingBackInsideOneRoom) {
+  const double drift = 0.5 * std::numbers::pi / 180.0;  // 0.5° per metre: 11° over the room
+  const CorridorRun thesis = map_one_room_corridor(false, drift);
+  // The matches weigh their echoes against odometry's drift model: the P2-AT's (0.005 rad/√m,
+  // a tenth of this drift) holds most of each correction back; one that admits it (0.01) less.
+  const CorridorRun held = map_one_room_corridor(false, drift, true);
+  const CorridorRun matched = map_one_room_corridor(false, drift, true, 0.01);
+  EXPECT_EQ(matched.stats.rooms, 1u);
+  EXPECT_NEAR(thesis.final_heading_rad, 22.0 * drift, 1e-6);
+  // A match every metre of the estimate's travel: the first has no memory to match.
+  EXPECT_EQ(matched.stats.scan_matches, 21u);
+  EXPECT_EQ(matched.stats.scan_matches_measured, 20u);
+  // Each match measures the drift since the memory beside it was drawn, about 0.5°, and the
+  // posterior applies part of it: measured 11° -> 9.3° and 7.9°.
+  const double deg = std::numbers::pi / 180.0;
+  EXPECT_LT(std::abs(held.final_heading_rad), 9.8 * deg);
+  EXPECT_LT(std::abs(matched.final_heading_rad), 8.5 * deg);
+  EXPECT_GT(matched.final_heading_rad, 0.0);  // turned back, not past the truth
+  EXPECT_LT(matched.median_wall_error_m, thesis.median_wall_error_m);
+}
+
+TEST(Mapper, ScanMatchingLeavesAnUndriftedHeadingAlone) {
+  const CorridorRun matched = map_one_room_corridor(false, 0.0, true);
+  EXPECT_EQ(matched.stats.scan_matches_measured, 20u);
+  EXPECT_LT(std::abs(matched.final_heading_rad), 0.2 * std::numbers::pi / 180.0);
 }
 
 TEST(Mapper, ARoomLargerThanTheExtentLimitEnds) {

@@ -85,6 +85,14 @@ struct RunMetrics {
     std::size_t pairs = 0;          ///< wall pairs in its last round
   };
   std::optional<Relaxation> relaxation;
+  /// The estimate kept on the echoes of the last minute (mapper.scan_match; absent when off).
+  struct ScanMatch {
+    std::size_t matches = 0;          ///< tried
+    std::size_t measured = 0;         ///< of which enough echoes met the memory's walls
+    double rotation_total_deg = 0.0;  ///< Σ |rotation applied|
+    double shift_total_m = 0.0;       ///< Σ |shift applied|
+  };
+  std::optional<ScanMatch> scan_match;
   std::vector<RoomReport> rooms;
   double sim_time_s = 0.0;           ///< time of the last frame
   double wall_time_s = 0.0;          ///< run loop + metrics, figures excluded

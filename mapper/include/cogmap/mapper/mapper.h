@@ -19,6 +19,7 @@
 #include "cogmap/mapper/localization/localizer.h"
 #include "cogmap/mapper/localization/map_relaxation.h"
 #include "cogmap/mapper/localization/odometry_recalibration.h"
+#include "cogmap/mapper/localization/scan_match.h"
 #include "cogmap/mapper/localization/wall_offsets.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
 #include "cogmap/mapper/seam/sensor_frame.h"
@@ -36,6 +37,7 @@ struct MapperOptions {
   LocalizerOptions localizer;
   TranslationOptions translation;  ///< a room's shift from the offsets of walls seen before
   GlimpseOptions glimpse;          ///< in-room heading correction by short glimpses
+  ScanMatchOptions scan_match;     ///< the estimate kept on the echoes of the last minute
   DoorFixOptions door_fix;         ///< position fixes at doorways passed again
   RelaxationOptions relaxation;    ///< the rooms' positions adjusted together when the run ends
   /// A skid-steer's odometry re-integrated with a curvature-dependent track before anything uses
@@ -74,6 +76,10 @@ struct MapperStats {
   std::size_t glimpses = 0;                  ///< glimpses measured (in-room heading correction)
   std::size_t glimpse_corrections = 0;       ///< of which EM applied a rotation
   double glimpse_correction_abs_rad = 0.0;   ///< Σ |glimpse rotations|
+  std::size_t scan_matches = 0;              ///< matches tried (options.scan_match)
+  std::size_t scan_matches_measured = 0;     ///< of which enough echoes met memory walls
+  double scan_match_rotation_abs_rad = 0.0;  ///< Σ |rotations applied|
+  double scan_match_shift_abs_m = 0.0;       ///< Σ |shifts applied|
   std::size_t translations = 0;              ///< rooms shifted by their wall offsets
   double translation_abs_m = 0.0;            ///< Σ |those shifts|
   std::size_t door_fixes = 0;                ///< doorways passed again that moved the estimate
