@@ -205,6 +205,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "scan_match_min_window_echoes",
                      "scan_match_sigma_m",
                      "scan_match_rotation",
+                     "scan_match_shift",
                      "door_fix",
                      "door_fix_radius_m",
                      "door_fix_drift_sd_per_m",
@@ -304,6 +305,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "glimpse_min_total_wall_m", 0.0, 1000.0, o.glimpse.min_total_wall_m);
   o.scan_match.enabled = block.get_or<bool>("scan_match", o.scan_match.enabled);
   o.scan_match.rotation = block.get_or<bool>("scan_match_rotation", o.scan_match.rotation);
+  o.scan_match.shift = block.get_or<bool>("scan_match_shift", o.scan_match.shift);
   o.scan_match.interval_m =
       number_in(block, "scan_match_interval_m", 0.1, 100.0, o.scan_match.interval_m);
   o.scan_match.interval_rad = number_in(block, "scan_match_interval_deg", 1.0, 1e6,

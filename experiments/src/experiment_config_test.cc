@@ -120,7 +120,8 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
       p, {"mapper.scan_match=true", "mapper.scan_match_interval_m=2",
           "mapper.scan_match_interval_deg=45", "mapper.scan_match_min_window_echoes=150",
           "mapper.scan_match_memory_readings=6000", "mapper.scan_match_correlated_echoes=5",
-          "mapper.scan_match_sigma_m=0.15", "mapper.scan_match_rotation=false"});
+          "mapper.scan_match_sigma_m=0.15", "mapper.scan_match_rotation=false",
+          "mapper.scan_match_shift=false"});
   EXPECT_TRUE(matched.mapper.scan_match.enabled);
   EXPECT_DOUBLE_EQ(matched.mapper.scan_match.interval_m, 2.0);
   EXPECT_NEAR(matched.mapper.scan_match.interval_rad, std::numbers::pi / 4.0, 1e-12);
@@ -129,6 +130,8 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_DOUBLE_EQ(matched.mapper.scan_match.correlated_echoes, 5.0);
   EXPECT_DOUBLE_EQ(matched.mapper.scan_match.sigma_m, 0.15);
   EXPECT_FALSE(matched.mapper.scan_match.rotation);
+  EXPECT_FALSE(matched.mapper.scan_match.shift);
+  EXPECT_TRUE(defaults.mapper.scan_match.shift);
   EXPECT_NE(error_of(p, {"mapper.scan_match_min_window_echoes=10"}).find("[30, 100000]"),
             std::string::npos);
   EXPECT_NE(error_of(p, {"mapper.scan_match_memory_readings=1.5"}).find("expected an integer"),

@@ -215,7 +215,8 @@ ScanMatchFix ScanMatcher::match(const Pose2& pose, double rotation_prior_var_rad
       // counted 1/correlated_echoes) times odometry's prior.
       const int n_r =
           options_.rotation ? static_cast<int>(std::round(half_r / options_.rotation_step_rad)) : 0;
-      const int n_t = static_cast<int>(std::round(half_t / options_.shift_step_m));
+      const int n_t =
+          options_.shift ? static_cast<int>(std::round(half_t / options_.shift_step_m)) : 0;
       const double per_echo = 1.0 / options_.correlated_echoes;
       struct Cell {
         double rotation, tx, ty, log_post;
@@ -286,7 +287,8 @@ ScanMatchFix ScanMatcher::match(const Pose2& pose, double rotation_prior_var_rad
       fix.rotation_var_rad2 = options_.rotation
                                   ? std::min(rotation_prior_var_rad2, std::max(vr, step_r2))
                                   : rotation_prior_var_rad2;
-      fix.shift_var_m2 = std::min(shift_prior_var_m2, shift_var);
+      fix.shift_var_m2 =
+          options_.shift ? std::min(shift_prior_var_m2, shift_var) : shift_prior_var_m2;
     }
   }
 

@@ -102,6 +102,22 @@ TEST(ScanMatch, FindsTheEstimatesRotationAndShift) {
   EXPECT_LT(fix.shift_var_m2, 0.01 / 4.0);
 }
 
+TEST(ScanMatch, TurningOnlyLeavesThePositionAlone) {
+  const RobotGeometry robot = p2at_geometry();
+  const auto walls = room_walls();
+  ScanMatchOptions turning_only = options();
+  turning_only.shift = false;
+  ScanMatcher matcher(turning_only, robot);
+  draw_memory(matcher, robot, walls);
+  const Point2 end{1.5, 3.6};
+  const Pose2 estimate = draw_window(matcher, robot, walls, rotation_about(end, 2.0 * kDeg));
+  const ScanMatchFix fix = matcher.match(estimate, std::pow(3.0 * kDeg, 2), 0.01);
+  ASSERT_TRUE(fix.measured);
+  EXPECT_NEAR(fix.rotation_rad, -2.0 * kDeg, 0.3 * kDeg);
+  EXPECT_EQ(fix.shift_m, Point2::Zero());
+  EXPECT_EQ(fix.shift_var_m2, 0.01);  // not measured: the prior's
+}
+
 TEST(ScanMatch, LeavesAnEstimateWithoutErrorAlone) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();

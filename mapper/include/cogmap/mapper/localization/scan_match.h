@@ -49,8 +49,11 @@ struct ScanMatchOptions {
   double correlated_echoes = 3.0;
   /// Fewer window echoes than this within 2 sd of a memory wall: nothing is measured.
   std::size_t min_matched = 30;
-  /// Whether the match also turns the estimate (false: it only shifts it).
+  /// Whether the match turns the estimate (false: it only shifts it) ...
   bool rotation = true;
+  /// ... and whether it shifts it (false: it only turns it; exploring, the shift doubles the
+  /// contacts, docs/algorithms.md).
+  bool shift = true;
   /// Search half-widths (4 prior sd, clamped to these) and steps.
   double max_rotation_rad = 0.105;    ///< 6°
   double rotation_step_rad = 0.0035;  ///< 0.2°
