@@ -227,4 +227,12 @@ std::optional<RunMetrics::Relaxation> relaxation_metrics(const mapper::MapperOpt
                                 stats.relaxation_wall_thickness_m, stats.relaxation_pairs};
 }
 
+std::optional<RunMetrics::ScanMatch> scan_match_metrics(const mapper::MapperOptions& options,
+                                                        const mapper::MapperStats& stats) {
+  if (!options.scan_match.enabled) return std::nullopt;
+  return RunMetrics::ScanMatch{stats.scan_matches, stats.scan_matches_measured,
+                               stats.scan_match_rotation_abs_rad * 180.0 / std::numbers::pi,
+                               stats.scan_match_shift_abs_m};
+}
+
 }  // namespace cogmap::experiments

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 
@@ -167,6 +168,21 @@ TEST(RunMetrics, TheScanMatchBlockIsWrittenOnlyWhenMatching) {
   EXPECT_EQ(j["measured"].get<int>(), 204);
   EXPECT_DOUBLE_EQ(j["rotation_total_deg"].get<double>(), 96.5);
   EXPECT_DOUBLE_EQ(j["shift_total_m"].get<double>(), 4.25);
+  // From the mapper's figures: none when off, the rotations in degrees when on.
+  mapper::MapperOptions options;
+  mapper::MapperStats stats;
+  stats.scan_matches = 12;
+  stats.scan_matches_measured = 9;
+  stats.scan_match_rotation_abs_rad = std::numbers::pi / 36.0;
+  stats.scan_match_shift_abs_m = 0.3;
+  EXPECT_FALSE(scan_match_metrics(options, stats).has_value());
+  options.scan_match.enabled = true;
+  const auto block = scan_match_metrics(options, stats);
+  ASSERT_TRUE(block.has_value());
+  EXPECT_EQ(block->matches, 12u);
+  EXPECT_EQ(block->measured, 9u);
+  EXPECT_NEAR(block->rotation_total_deg, 5.0, 1e-12);
+  EXPECT_DOUBLE_EQ(block->shift_total_m, 0.3);
 }
 
 TEST(RunMetrics, EachRoomSaysWhatEmMeasuredInDegrees) {

@@ -390,11 +390,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.door_fixes = stats.door_fixes;
   m.door_fix_total_m = stats.door_fix_abs_m;
   m.relaxation = relaxation_metrics(experiment.mapper, stats);
-  if (experiment.mapper.scan_match.enabled) {
-    m.scan_match = RunMetrics::ScanMatch{
-        stats.scan_matches, stats.scan_matches_measured,
-        stats.scan_match_rotation_abs_rad * 180.0 / std::numbers::pi, stats.scan_match_shift_abs_m};
-  }
+  m.scan_match = scan_match_metrics(experiment.mapper, stats);
   m.build_time_s = stats.build_time_s;
   m.localization_time_s = stats.localization_time_s;
   m.room_cpu_s = room_cpu_s;

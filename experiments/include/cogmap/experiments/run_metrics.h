@@ -112,6 +112,10 @@ struct RunMetrics {
 std::optional<RunMetrics::Relaxation> relaxation_metrics(const mapper::MapperOptions& options,
                                                          const mapper::MapperStats& stats);
 
+/// The scan-match block from the mapper's figures; none when mapper.scan_match is off.
+std::optional<RunMetrics::ScanMatch> scan_match_metrics(const mapper::MapperOptions& options,
+                                                        const mapper::MapperStats& stats);
+
 /// The JSON text (2-space indent, keys in a fixed order, shortest round-trip doubles, null for
 /// undefined values). Everything outside "timing" is a pure function of the run's inputs.
 std::string metrics_json_text(const RunMetrics& metrics);
