@@ -17,20 +17,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// What a run writes at the top of its directory (docs/cli.md): a directory holding only these
-// was made by a run before the marker existed, and may be reused.
-bool is_run_product(const fs::directory_entry& entry) {
+// The files a run writes at the top of its directory (docs/cli.md), besides the room grids.
+constexpr const char* kRunProductFiles[] = {
+    "metrics.json",    "trajectory.csv",  "map_segments.csv", "map_segments_odom.csv",
+    "map.svg",         "asr_graph.json",  "experiment.yaml",  "nav_trace.csv",
+    "explore_map.pgm", "explore_map.yaml"};
+
+bool is_grid_file_name(const std::string& name) {
   static const std::regex kGrid(R"(grid_\d{3,}\.(pgm|yaml))");
+  return std::regex_match(name, kGrid);
+}
+
+// What a run writes at the top of its directory: a directory holding only these was made by a
+// run before the marker existed, and may be reused.
+bool is_run_product(const fs::directory_entry& entry) {
   const std::string name = entry.path().filename().string();
   std::error_code ec;
   if (entry.is_directory(ec)) return name == "asrs" || name == "figures";
-  for (const char* known :
-       {"metrics.json", "trajectory.csv", "map_segments.csv", "map_segments_odom.csv", "map.svg",
-        "asr_graph.json", "experiment.yaml", "nav_trace.csv", "explore_map.pgm", "explore_map.yaml",
-        kRunMarkerName, kRunLockName}) {
+  for (const char* known : kRunProductFiles) {
     if (name == known) return true;
   }
-  return std::regex_match(name, kGrid) || mapper::io::is_temp_file_name(name);
+  return name == kRunMarkerName || name == kRunLockName || is_grid_file_name(name) ||
+         mapper::io::is_temp_file_name(name);
 }
 
 bool same_directory(const fs::path& a, const fs::path& b) {
@@ -40,6 +48,22 @@ bool same_directory(const fs::path& a, const fs::path& b) {
 }
 
 }  // namespace
+
+void clear_run_outputs(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return;
+  static const std::regex kAsr(R"(\d{3,}\.json)");
+  for (const char* name : kRunProductFiles) fs::remove(dir / name, ec);
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (is_grid_file_name(e.path().filename().string())) fs::remove(e.path(), ec);
+  }
+  for (const auto& e : fs::directory_iterator(dir / "asrs", ec)) {
+    if (std::regex_match(e.path().filename().string(), kAsr)) fs::remove(e.path(), ec);
+  }
+  for (const auto& e : fs::directory_iterator(dir / "figures", ec)) {
+    if (e.path().extension() == ".png") fs::remove(e.path(), ec);
+  }
+}
 
 std::string safe_path_component(std::string_view name) {
   std::string out;

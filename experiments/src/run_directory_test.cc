@@ -116,6 +116,30 @@ TEST(RunDirectory, PrepareRemovesStaleTempFilesAndOldOutputsOnly) {
   EXPECT_EQ(left, (std::vector<std::string>{".cogmap-run", "experiment.yaml", "notes.tmp"}));
 }
 
+TEST(RunDirectory, ClearRemovesEveryRunProductAndNothingElse) {
+  const fs::path d = fresh_dir("clear");
+  for (const char* f :
+       {"metrics.json", "trajectory.csv", "map_segments.csv", "map_segments_odom.csv", "map.svg",
+        "asr_graph.json", "experiment.yaml", "nav_trace.csv", "explore_map.pgm", "explore_map.yaml",
+        "grid_000.pgm", "grid_1234.yaml", "asrs/007.json", "figures/graph.png"}) {
+    write(d / f, "old");
+  }
+  // Names a run never writes: a user's own files stay.
+  for (const char* f : {"grid_01.pgm", "grid_000.png", "notes.csv", "metrics.json.bak",
+                        "asrs/readme.txt", "asrs/07.json", "figures/plot.svg"}) {
+    write(d / f, "mine");
+  }
+  clear_run_outputs(d);
+  std::vector<std::string> left;
+  for (const auto& entry : fs::recursive_directory_iterator(d)) {
+    if (entry.is_regular_file()) left.push_back(fs::relative(entry.path(), d).string());
+  }
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"asrs/07.json", "asrs/readme.txt", "figures/plot.svg",
+                                            "grid_000.png", "grid_01.pgm", "metrics.json.bak",
+                                            "notes.csv"}));
+}
+
 TEST(RunDirectory, SavedExperimentRebasesARelativeWorld) {
   Experiment e;
   e.file = "/proj/experiments/two_rooms.yaml";

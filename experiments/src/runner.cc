@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <future>
 #include <numbers>
-#include <regex>
 #include <system_error>
 
+#include "cogmap/experiments/controller_factory.h"
 #include "cogmap/experiments/error_breakdown.h"
 #include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/experiments/ros_map.h"
@@ -49,36 +49,6 @@ std::string grid_name(mapper::GridKind kind) {
       return "dempster_shafer";
   }
   return "?";
-}
-
-std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig& c) {
-  switch (c.type) {
-    case ControllerKind::kRoute: {
-      mapper::nav::RouteOptions o;
-      o.speed_mps = c.speed_mps;
-      o.waypoint_tolerance_m = c.waypoint_tolerance_m;
-      if (c.door_search && !*c.door_search) o.door.search_per_waypoint = 0;
-      o.door.cross_side_walls.enabled = c.grazing_walls;
-      return mapper::nav::make_route_follower(o, c.waypoints);
-    }
-    case ControllerKind::kExplore: {
-      mapper::nav::ExploreOptions o;
-      o.speed_mps = c.speed_mps;
-      o.waypoint_tolerance_m = c.waypoint_tolerance_m;
-      o.strategy = c.explore_strategy;
-      o.time_budget_s = c.explore_time_budget_s;
-      o.distance_budget_m = c.explore_distance_budget_m;
-      if (c.door_search) {
-        o.door.search_per_waypoint =
-            *c.door_search ? mapper::nav::DoorOptions{}.search_per_waypoint : 0;
-      }
-      o.door.cross_side_walls.enabled = c.grazing_walls;
-      return mapper::nav::make_explorer(o);
-    }
-    case ControllerKind::kNone:
-      break;
-  }
-  return mapper::nav::make_idle_controller();
 }
 
 /// What the controller sees this cycle: `frame` (the true pose already removed), the mapper's
@@ -152,27 +122,6 @@ void draw_map_error(const std::string& title, const std::vector<mapper::Segment>
 }
 
 }  // namespace
-
-void clear_run_outputs(const fs::path& dir) {
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return;
-  static const std::regex kGrid(R"(grid_\d{3,}\.(pgm|yaml))");
-  static const std::regex kAsr(R"(\d{3,}\.json)");
-  for (const char* name : {"metrics.json", "trajectory.csv", "map_segments.csv",
-                           "map_segments_odom.csv", "map.svg", "asr_graph.json", "experiment.yaml",
-                           "nav_trace.csv", "explore_map.pgm", "explore_map.yaml"}) {
-    fs::remove(dir / name, ec);
-  }
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (std::regex_match(e.path().filename().string(), kGrid)) fs::remove(e.path(), ec);
-  }
-  for (const auto& e : fs::directory_iterator(dir / "asrs", ec)) {
-    if (std::regex_match(e.path().filename().string(), kAsr)) fs::remove(e.path(), ec);
-  }
-  for (const auto& e : fs::directory_iterator(dir / "figures", ec)) {
-    if (e.path().extension() == ".png") fs::remove(e.path(), ec);
-  }
-}
 
 RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                              const GroundTruth* truth, const RunOptions& options) {

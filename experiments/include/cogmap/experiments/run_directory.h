@@ -53,6 +53,11 @@ class RunDirectoryLock {
   int fd_ = -1;
 };
 
+/// Removes the products of an earlier (possibly interrupted) run from `dir`, and only those:
+/// metrics.json, trajectory.csv, map*.csv, map.svg, asr_graph.json, experiment.yaml,
+/// nav_trace.csv, explore_map.{pgm,yaml}, grid_NNN.{pgm,yaml}, asrs/NNN.json and figures/*.png.
+void clear_run_outputs(const std::filesystem::path& dir);
+
 /// Makes `dir` ready for a run, under its lock: checks it (check_run_directory), writes the
 /// marker, removes temp files an interrupted writer left (DIR, DIR/asrs, DIR/figures) and the
 /// products of an earlier run (clear_run_outputs), then writes experiment.yaml

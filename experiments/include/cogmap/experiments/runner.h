@@ -70,9 +70,4 @@ RunSummary run_experiment(const Experiment& experiment, const RunOptions& option
 RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                              const GroundTruth* truth, const RunOptions& options);
 
-/// Removes the products of an earlier (possibly interrupted) run from `dir`, and only those:
-/// metrics.json, trajectory.csv, map*.csv, map.svg, asr_graph.json, experiment.yaml,
-/// grid_NNN.{pgm,yaml}, asrs/NNN.json and figures/*.png.
-void clear_run_outputs(const std::filesystem::path& dir);
-
 }  // namespace cogmap::experiments
