@@ -24,6 +24,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
             *c.door_search ? mapper::nav::DoorOptions{}.search_per_waypoint : 0;
       }
       o.door.cross_side_walls.enabled = c.grazing_walls;
+      o.plan_over_trail = c.plan_over_trail;
       return mapper::nav::make_explorer(o);
     }
     case ControllerKind::kNone:

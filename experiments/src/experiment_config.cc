@@ -46,7 +46,8 @@ RobotSource parse_source(const Node& n) {
 
 ControllerConfig parse_controller(const Node& block) {
   block.expect_keys({"type", "speed_mps", "waypoints", "waypoint_tolerance_m", "pose", "strategy",
-                     "time_budget_s", "distance_budget_m", "door_search", "grazing_walls"});
+                     "time_budget_s", "distance_budget_m", "door_search", "grazing_walls",
+                     "plan_over_trail"});
   ControllerConfig c;
   const Node type = block["type"];
   const std::string t = type.as<std::string>();
@@ -92,13 +93,14 @@ ControllerConfig parse_controller(const Node& block) {
       strategy->fail("unknown explore strategy '" + st + "' (expected frontier, edge or heading)");
     }
   }
-  for (const char* key : {"time_budget_s", "distance_budget_m"}) {
+  for (const char* key : {"time_budget_s", "distance_budget_m", "plan_over_trail"}) {
     if (block.child(key) && c.type != ControllerKind::kExplore) {
       block[key].fail(std::string(key) + " is only used by explore");
     }
   }
   if (const auto search = block.child("door_search")) c.door_search = search->as<bool>();
   if (const auto walls = block.child("grazing_walls")) c.grazing_walls = walls->as<bool>();
+  if (const auto trail = block.child("plan_over_trail")) c.plan_over_trail = trail->as<bool>();
   c.explore_time_budget_s = number_in(block, "time_budget_s", 0.0, 1e6, 0.0);
   c.explore_distance_budget_m = number_in(block, "distance_budget_m", 0.0, 1e6, 0.0);
   if (c.type == ControllerKind::kRoute && c.waypoints.empty()) {

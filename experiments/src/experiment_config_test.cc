@@ -249,6 +249,18 @@ TEST(ExperimentConfig, GrazingWallsAreOffUnlessAskedFor) {
   EXPECT_NE(error_of(p, {"controller.grazing_walls=7"}), "no error");
 }
 
+TEST(ExperimentConfig, PlanOverTrailIsOnForExploreAndOnlyThere) {
+  const fs::path x =
+      write_temp("xtrail.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore}\n");
+  EXPECT_TRUE(load_experiment(x, {}).controller.plan_over_trail);
+  EXPECT_FALSE(load_experiment(x, {"controller.plan_over_trail=false"}).controller.plan_over_trail);
+  EXPECT_NE(error_of(x, {"controller.plan_over_trail=maybe"}), "no error");
+  const fs::path route = write_temp("xtrail_route.yaml", kGood);
+  EXPECT_NE(error_of(route, {"controller.plan_over_trail=false"}).find("only used by explore"),
+            std::string::npos)
+      << error_of(route, {"controller.plan_over_trail=false"});
+}
+
 TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
   std::string text = kGood;
   text.replace(text.find("  cell_scale_mm"), 15, "  cell_scale_nm");

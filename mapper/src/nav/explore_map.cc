@@ -60,7 +60,7 @@ bool ExploreMap::cover(const Point2& lo, const Point2& hi) {
   const int w = static_cast<int>(std::ceil((new_hi_x - new_lo_x) / cell)) + 1;
   const int h = static_cast<int>(std::ceil((new_hi_y - new_lo_y) / cell)) + 1;
   std::vector<float> hits(static_cast<std::size_t>(w) * h, 0.0f), misses(hits.size(), 0.0f);
-  std::vector<std::uint8_t> seen(hits.size(), 0);
+  std::vector<std::uint8_t> seen(hits.size(), 0), traversed(hits.size(), 0);
   for (int y = 0; y < height_; ++y) {
     for (int x = 0; x < width_; ++x) {
       const std::size_t from = static_cast<std::size_t>(y) * width_ + x;
@@ -68,6 +68,7 @@ bool ExploreMap::cover(const Point2& lo, const Point2& hi) {
       hits[to] = hits_[from];
       misses[to] = misses_[from];
       seen[to] = seen_[from];
+      traversed[to] = traversed_[from];
     }
   }
   origin_x_m_ = new_lo_x;
@@ -77,6 +78,7 @@ bool ExploreMap::cover(const Point2& lo, const Point2& hi) {
   hits_ = std::move(hits);
   misses_ = std::move(misses);
   seen_ = std::move(seen);
+  traversed_ = std::move(traversed);
   return true;
 }
 
@@ -104,6 +106,11 @@ void ExploreMap::mark_body(const Point2& center, double radius_m) {
   }
 }
 
+void ExploreMap::mark_traversed(const Point2& center) {
+  if (!cover(center, center)) return;
+  traversed_[index(cell_of(center))] = 1;
+}
+
 void ExploreMap::add_frame(const SensorFrame& frame, const Pose2& pose,
                            const RobotGeometry& robot) {
   for (const SonarReading& r : frame.sonar) {
@@ -117,6 +124,7 @@ void ExploreMap::add_frame(const SensorFrame& frame, const Pose2& pose,
           echo ? std::optional<double>(r.range_m) : std::nullopt, robot);
   }
   mark_body(pose.translation(), 0.5 * robot.width_m);
+  mark_traversed(pose.translation());
 }
 
 bool ExploreMap::occluded(const Point2& origin, Cell target) const {

@@ -23,6 +23,8 @@ class ExploreMap {
   void add_frame(const SensorFrame& frame, const Pose2& pose, const RobotGeometry& robot);
   /// Marks the cells under a body of `radius_m` at `center` seen and free (the robot is there).
   void mark_body(const Point2& center, double radius_m);
+  /// Marks the cell under `center` as one the robot's centre has passed through.
+  void mark_traversed(const Point2& center);
 
   struct Cell {
     int x = 0;
@@ -42,6 +44,9 @@ class ExploreMap {
     return hits_[i] >= options_.occupied_min_weight &&
            hits_[i] >= options_.occupied_ratio * misses_[i];
   }
+  /// The robot's centre has passed through `c`: the way it came is a way back, whatever
+  /// echoes later paint there (a doorway's jambs, heard obliquely, paint it shut again).
+  bool traversed(Cell c) const { return inside(c) && traversed_[index(c)] != 0; }
   /// Echo weight, and the weight of beams that swept the cell free.
   float hit_weight(Cell c) const { return inside(c) ? hits_[index(c)] : 0.0f; }
   float miss_weight(Cell c) const { return inside(c) ? misses_[index(c)] : 0.0f; }
@@ -81,6 +86,7 @@ class ExploreMap {
   std::vector<float> hits_;    // weight of the echoes placed in the cell
   std::vector<float> misses_;  // weight of the beams that swept it free
   std::vector<std::uint8_t> seen_;
+  std::vector<std::uint8_t> traversed_;
   std::size_t seen_count_ = 0;
   std::size_t readings_ = 0;
   std::vector<Cell> swept_, hit_;  // one beam's cells, reused

@@ -263,6 +263,23 @@ TEST_F(ExploreMap, GrowingKeepsTheLatticeAndEarlierCells) {
   EXPECT_FALSE(seen(0.6, 0.2));
   EXPECT_FLOAT_EQ(total_hits(), 2.0f);
   EXPECT_GT(map_.seen_count(), before);
+  // The centre's trail moved with the growth too.
+  EXPECT_TRUE(map_.traversed(cell({0.0, 0.0})));
+  EXPECT_TRUE(map_.traversed(cell({-30.0, -20.0})));
+  EXPECT_FALSE(map_.traversed(cell({0.2, 0.0})));
+}
+
+TEST_F(ExploreMap, TheCentresTrailOutlastsTheEchoesPaintedOnIt) {
+  robot_.width_m = 0.5;
+  ping({silence()}, {1.0, 0.0, 0.0});  // the robot stood at (1.0, 0): its body's cells cleared
+  EXPECT_TRUE(map_.traversed(cell({1.0, 0.0})));
+  EXPECT_FALSE(map_.traversed(cell({1.2, 0.0})));  // under the body, not under its centre
+  EXPECT_TRUE(seen(1.2, 0.0));
+  // Later, from elsewhere, echoes paint the cell: an obstacle for the map, still the trail.
+  for (int k = 0; k < 5; ++k) ping({echo(1.0)});  // 5 × weight 1 ≥ half the body's 8
+  EXPECT_TRUE(occupied(1.0, 0.0));
+  EXPECT_TRUE(map_.traversed(cell({1.0, 0.0})));
+  EXPECT_FALSE(map_.traversed(cell({0.6, 0.0})));  // swept, never stood on
 }
 
 TEST_F(ExploreMap, NeverGrowsBeyondMaxSpan) {

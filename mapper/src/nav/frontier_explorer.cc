@@ -109,6 +109,11 @@ class FrontierExplorer final : public Controller {
       goal_reopened_ = false;
       auto plan =
           plan_to_frontier(map_, input.pose, banned_, options_.ban_radius_m, options_.frontier);
+      if (!plan && options_.plan_over_trail) {
+        FrontierOptions over_trail = options_.frontier;
+        over_trail.trail_passable = true;
+        plan = plan_to_frontier(map_, input.pose, banned_, options_.ban_radius_m, over_trail);
+      }
       if (!plan && map_.readings() >= ring) {
         plan = plan_through_reopened(input);
         goal_reopened_ = plan.has_value();

@@ -127,8 +127,11 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   const std::size_t n = static_cast<std::size_t>(w) * h;
   const double cap_m = std::max({o.soft_clearance_m, o.pinch_m, o.los_clearance_m}) + map.cell_m();
   const std::vector<double> clear = clearance(map, cap_m);
+  // A cell the robot's centre has passed through is passable whatever was painted there since
+  // (ExploreMap::traversed): the way through a doorway it took stays a way back.
   auto passable = [&](Cell c) {
-    return map.seen(c) && !map.occupied(c) && clear[map.index(c)] >= o.hard_clearance_m;
+    return (o.trail_passable && map.traversed(c)) ||
+           (map.seen(c) && !map.occupied(c) && clear[map.index(c)] >= o.hard_clearance_m);
   };
   // Frontier cells: passable, next to an unseen cell.
   std::vector<std::uint8_t> frontier(n, 0);
@@ -275,6 +278,7 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
     if (len > o.max_leg_m) return false;
     for (double t = 0.0; t <= len; t += 0.5 * map.cell_m()) {
       const Cell c = map.cell_of(pa + (len > 0 ? t / len : 0.0) * (pb - pa));
+      if (o.trail_passable && map.traversed(c)) continue;
       if (!map.seen(c) || map.occupied(c) || clear[map.index(c)] + 1e-9 < need) {
         return false;
       }

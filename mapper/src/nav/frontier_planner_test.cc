@@ -355,6 +355,46 @@ TEST(FrontierPlanner, ADoorwayPaintedShutIsReopenedByTheRoomGrid) {
   EXPECT_FALSE(walled.occupied(walled.cell_of(Point2(1.0, 0.2))));
 }
 
+// The same doorway painted shut after the robot walked through it and back (its centre's
+// trail along y = 0 from x = -1.0 to 1.4): with the trail passable (the explorer's plan when
+// nothing else is reachable, ExploreOptions::plan_over_trail) the plan goes through the
+// doorway along the trail; a trail that stopped short of the door opens nothing.
+TEST(FrontierPlanner, ADoorwayWalkedThroughStaysAWayBackOverTheTrail) {
+  Scene scene;
+  scene.add_free(-10, -5, 4, 5);
+  scene.add_free(6, -2, 8, 2);
+  scene.add_open(9, -2, 9, 2);
+  const ExploreMap painted = scene.build();
+  const Pose2 from{-1.0, 0.0, 0.0};
+  FrontierOptions over_trail;
+  over_trail.trail_passable = true;
+  ASSERT_FALSE(plan_to_frontier(painted, from, {}, 0.0, over_trail).has_value());
+
+  ExploreMap walked = painted;
+  for (double x = -1.0; x <= 1.4 + 1e-9; x += 0.05) walked.mark_traversed({x, 0.01});
+  ASSERT_TRUE(walked.occupied(walked.cell_of(Point2(1.0, 0.0))));  // still painted shut
+  EXPECT_FALSE(plan_to_frontier(walked, from, {}, 0.0, FrontierOptions{}).has_value());
+  const std::optional<FrontierPlan> plan = plan_to_frontier(walked, from, {}, 0.0, over_trail);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_NEAR(plan->frontier.x(), 1.6, 1e-9) << describe(*plan);
+  // Every leg keeps to seen free cells or to the trail.
+  Point2 a = walked.center_of(walked.cell_of(from.translation()));
+  for (const Point2& b : plan->waypoints) {
+    const double len = (b - a).norm();
+    for (double t = 0.0; t <= len; t += 0.02) {
+      const Point2 p = a + (t / len) * (b - a);
+      EXPECT_TRUE(walkable(walked, p) || walked.traversed(walked.cell_of(p)))
+          << "leg " << a.transpose() << " -> " << b.transpose() << " crosses " << p.transpose();
+    }
+    a = b;
+  }
+  EXPECT_GT(plan->waypoints.back().x(), 1.0) << describe(*plan);  // beyond the door
+
+  ExploreMap short_of_door = painted;
+  for (double x = -1.0; x <= 0.6 + 1e-9; x += 0.05) short_of_door.mark_traversed({x, 0.01});
+  EXPECT_FALSE(plan_to_frontier(short_of_door, from, {}, 0.0, over_trail).has_value());
+}
+
 TEST(FrontierPlanner, AFrontierInTheOpenIsNoDoorway) {
   const std::optional<FrontierPlan> plan =
       plan_to_frontier(disc_map(), {0.0, 0.0, 0.0}, {}, 0.0, FrontierOptions{});

@@ -54,6 +54,9 @@ struct ControllerConfig {
   /// only by the side transducers, stops the crossing (DoorOptions::cross_side_walls; off by
   /// default, docs/algorithms.md "Walls met at a grazing angle").
   bool grazing_walls = false;
+  /// `plan_over_trail` (explore only): with no frontier reachable, the frontier explorer plans
+  /// once more through the cells its centre has passed (ExploreOptions::plan_over_trail, on).
+  bool plan_over_trail = true;
 };
 
 /// Bounds on what an experiment may ask for (docs/reliability.md "Limits"): beyond them a

@@ -73,6 +73,9 @@ struct FrontierOptions {
   /// doorway this clear (next to the obstacle cells of a door the jambs' echoes painted down to
   /// 0.4 m; the door behaviour then finds the real opening). Negative: no last resort.
   double doorway_goal_clearance_m = 0.15;
+  /// Cells the robot's centre has passed through are passable for this plan, whatever echoes
+  /// painted there since (ExploreOptions::plan_over_trail sets it for its second plan).
+  bool trail_passable = false;
   /// The last look before stopping, when no frontier is reachable: the explore map's obstacle
   /// cells that the current room's grid holds as swept by a beam's axis (a cell below 0) and
   /// not echoed (no cell at this HIMM value or above: one axis echo adds 3, a jamb's neighbour
@@ -184,9 +187,15 @@ struct ExploreOptions {
                                       ///< frontiers (0 = stop at once). 150 s: one lap of a
                                       ///< 10 x 8 m room at the edge walk's ~0.21 m/s
                                       ///< (docs/algorithms.md, "The start room's edge walk")
-  double time_budget_s = 0.0;         ///< stop after this long (0 = no budget); not complete
-  double distance_budget_m = 0.0;     ///< stop after this much travel by the odometry (0 = no
-                                      ///< budget); both budgets apply to every strategy
+  /// When no frontier is reachable, plan once more with the cells the robot's centre passed
+  /// through passable (FrontierOptions::trail_passable) before the other last resorts: a
+  /// doorway walked through is a way back even after its jambs, heard obliquely from the rooms
+  /// either side, have painted it shut again (explorations stopped with frontiers left in
+  /// rooms they could no longer plan back to; docs/algorithms.md, "The way back").
+  bool plan_over_trail = true;
+  double time_budget_s = 0.0;      ///< stop after this long (0 = no budget); not complete
+  double distance_budget_m = 0.0;  ///< stop after this much travel by the odometry (0 = no
+                                   ///< budget); both budgets apply to every strategy
   // Every strategy:
   double speed_mps = 0.5;  ///< thesis §4: 0.5 m/s
   double max_turn_rate_radps = 1.0;
