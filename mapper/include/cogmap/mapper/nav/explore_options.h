@@ -43,7 +43,7 @@ struct ExploreMapOptions {
                                        ///< incidence) reflects the pulse away too, so a wall sensed
                                        ///< only obliquely loses little
   double max_span_m = 200.0;           ///< the map never grows beyond this in x or y: 1001²
-                                       ///< cells (8 MB), ~55 MB while a plan runs (the room grid's
+                                       ///< cells (9 MB), ~56 MB while a plan runs (the room grid's
                                        ///< own bound is 200 m too, MapperOptions)
 };
 
