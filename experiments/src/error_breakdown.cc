@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
+
+#include "cogmap/experiments/rigid_fit.h"
 
 namespace cogmap::experiments {
 
@@ -156,6 +159,42 @@ HeadingBreakdown heading_breakdown(TrajectoryView rows, std::span<const RoomSpan
   return h;
 }
 
+std::pair<AlignedMap, AlignedRooms> aligned_errors(std::span<const std::vector<Point2>> rooms_lines,
+                                                   const SegmentIndex& truth,
+                                                   const Point2& start_m) {
+  std::vector<Point2> all;
+  for (const std::vector<Point2>& room : rooms_lines)
+    all.insert(all.end(), room.begin(), room.end());
+  AlignedMap whole;
+  const RigidFit map_fit = fit_rigid(all, truth);
+  if (map_fit.fitted) {
+    whole.rotation_deg = map_fit.transform.theta_rad * kDegPerRad;
+    whole.start_shift_m = map_fit.transform.transform(start_m) - start_m;
+  }
+  for (Point2& p : all) p = map_fit.transform.transform(p);
+  std::vector<double> whole_m = nearest_distances_m(truth, all);
+  whole.error = stage_error(whole_m);
+
+  // Each room from where the whole map's fit put it, by its own fit with the near gates only:
+  // a room of one or two short walls pulled from a metre away could snap onto its neighbour's.
+  RigidFitOptions room_options;
+  room_options.gates_m = {0.4, 0.25};
+  room_options.min_pairs = 20;  // 1 m of wall at the 5 cm sampling
+  AlignedRooms rooms;
+  std::vector<double> rooms_m;
+  for (const std::vector<Point2>& room : rooms_lines) {
+    std::vector<Point2> moved = room;
+    for (Point2& p : moved) p = map_fit.transform.transform(p);
+    // A room too small to fit (or with nothing near the truth) stays where the map's fit put it.
+    const RigidFit room_fit = fit_rigid(moved, truth, room_options);
+    if (room_fit.fitted) ++rooms.rooms_fitted;
+    for (Point2& p : moved) p = room_fit.transform.transform(p);
+    append(rooms_m, nearest_distances_m(truth, moved));
+  }
+  rooms.error = stage_error(rooms_m);
+  return {whole, rooms};
+}
+
 ErrorBreakdownBuilder::ErrorBreakdownBuilder(std::span<const Segment> truth,
                                              double occupied_threshold,
                                              const MapMetricsOptions& options)
@@ -203,6 +242,11 @@ ErrorBreakdown ErrorBreakdownBuilder::finish(TrajectoryView rows) {
   b.cleaned = stage_error(cleaned_m);
   b.points = stage_error(points_m);
   b.lines = stage_error(lines_m);
+  std::vector<std::vector<Point2>> rooms_lines;
+  for (RoomPoints& room : rooms_) rooms_lines.push_back(std::move(room.lines));
+  const Point2 start_m =
+      rows.begin() == rows.end() ? Point2::Zero() : rows.begin()->estimate.translation();
+  std::tie(b.aligned_map, b.aligned_rooms) = aligned_errors(rooms_lines, truth_, start_m);
   b.heading = heading_breakdown(rows, spans_);
   // The points are done with: give their memory back before the map metrics run.
   std::vector<RoomPoints>().swap(rooms_);

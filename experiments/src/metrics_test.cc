@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "cogmap/experiments/nav_metrics.h"
 #include "cogmap/experiments/segment_index.h"
@@ -115,6 +116,32 @@ TEST(SegmentIndex, AnyWithinMatchesBruteForce) {
   EXPECT_FALSE(one.any_within_m({-3.0, 3.0}, 3.1));
   EXPECT_FALSE(one.any_within_m({0.5, 1.0}, -1.0));
   EXPECT_FALSE(SegmentIndex({}, 0.5).any_within_m({0.0, 0.0}, 10.0));
+}
+
+TEST(SegmentIndex, NearestPointWithinLiesOnTheNearestSegment) {
+  const std::vector<Segment> segs = spiral_of_segments();
+  const SegmentIndex index(segs, 0.5);
+  int found = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Point2 p(std::sin(k * 1.3) * 8.0, std::cos(k * 0.9) * 6.0);
+    double brute = INFINITY;
+    for (const auto& s : segs) brute = std::min(brute, mapper::distance_to_segment_m(p, s));
+    const std::optional<Point2> q = index.nearest_point_within(p, 0.6);
+    ASSERT_EQ(q.has_value(), brute <= 0.6) << k;
+    if (!q) continue;
+    ++found;
+    EXPECT_NEAR((*q - p).norm(), brute, 1e-12) << k;
+    double on = INFINITY;  // the point lies on some segment
+    for (const auto& s : segs) on = std::min(on, mapper::distance_to_segment_m(*q, s));
+    EXPECT_LT(on, 1e-12) << k;
+  }
+  EXPECT_GT(found, 50);  // both answers were exercised
+  // The foot of the perpendicular, or the nearer end.
+  const SegmentIndex one(std::vector<Segment>{{{0, 0}, {0, 2}}}, 0.5);
+  EXPECT_TRUE(one.nearest_point_within({0.3, 1.5}, 0.3)->isApprox(Point2(0.0, 1.5)));
+  EXPECT_TRUE(one.nearest_point_within({0.1, 2.2}, 0.3)->isApprox(Point2(0.0, 2.0)));
+  EXPECT_FALSE(one.nearest_point_within({0.3, 1.5}, 0.29).has_value());
+  EXPECT_FALSE(SegmentIndex({}, 0.5).nearest_point_within({0.0, 0.0}, 10.0).has_value());
 }
 
 TEST(SegmentIndex, FirstBlockerIsTheNearestOnTheWalkAndCrossesAgreesWithIt) {

@@ -68,12 +68,28 @@ Json stage_json(const StageError& e) {
   return {{"median_m", opt(e.median_m)}, {"p90_m", opt(e.p90_m)}, {"count", e.count}};
 }
 
+Json aligned_map_json(const AlignedMap& a) {
+  Json j = stage_json(a.error);
+  j["rotation_deg"] = opt(a.rotation_deg);
+  j["start_shift_m"] =
+      a.start_shift_m ? Json::array({a.start_shift_m->x(), a.start_shift_m->y()}) : Json(nullptr);
+  return j;
+}
+
+Json aligned_rooms_json(const AlignedRooms& a) {
+  Json j = stage_json(a.error);
+  j["rooms_fitted"] = a.rooms_fitted;
+  return j;
+}
+
 Json breakdown_json(const ErrorBreakdown& b) {
   const HeadingBreakdown& h = b.heading;
   return {{"grid", stage_json(b.grid)},
           {"cleaned", stage_json(b.cleaned)},
           {"points", stage_json(b.points)},
           {"lines", stage_json(b.lines)},
+          {"aligned_map", aligned_map_json(b.aligned_map)},
+          {"aligned_rooms", aligned_rooms_json(b.aligned_rooms)},
           {"heading",
            {{"rooms", h.rooms},
             {"entry_error_deg_mean_abs", opt(h.entry_error_deg_mean_abs)},

@@ -127,6 +127,33 @@ double SegmentIndex::nearest_distance_m(const Point2& p) const {
   return best;
 }
 
+std::optional<Point2> SegmentIndex::nearest_point_within(const Point2& p, double radius_m) const {
+  if (segments_.empty() || !(radius_m >= 0.0)) return std::nullopt;
+  // As any_within_m: a segment point within radius_m lies in the box p ± radius_m, in a cell
+  // that lists its segment.
+  const Cell lo = cell_of({p.x() - radius_m, p.y() - radius_m});
+  const Cell hi = cell_of({p.x() + radius_m, p.y() + radius_m});
+  std::optional<Point2> best;
+  double best_m = radius_m;
+  for (int y = std::max(0, lo.y); y <= std::min(height_ - 1, hi.y); ++y) {
+    for (int x = std::max(0, lo.x); x <= std::min(width_ - 1, hi.x); ++x) {
+      for (const std::uint32_t i : bucket(x, y)) {
+        const mapper::Segment& s = segments_[i];
+        const Point2 d = s.b - s.a;
+        const double len2 = d.squaredNorm();
+        const double t = len2 > 0.0 ? std::clamp((p - s.a).dot(d) / len2, 0.0, 1.0) : 0.0;
+        const Point2 q = s.a + t * d;
+        const double dist_m = (p - q).norm();
+        if (dist_m <= best_m) {
+          best_m = dist_m;
+          best = q;
+        }
+      }
+    }
+  }
+  return best;
+}
+
 bool SegmentIndex::any_within_m(const Point2& p, double radius_m) const {
   if (segments_.empty() || !(radius_m >= 0.0)) return false;
   // A segment point within radius_m of p lies in the box p ± radius_m, and the segment is

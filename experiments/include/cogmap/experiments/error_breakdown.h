@@ -84,14 +84,37 @@ struct HeadingBreakdown {
 /// order) for all rooms.
 HeadingBreakdown heading_breakdown(TrajectoryView rows, std::span<const RoomSpan> rooms);
 
+/// The `lines` samples laid onto the truth by one rigid transform of the whole map
+/// (rigid_fit.h): the error left when only the map's placement as a whole is taken away.
+struct AlignedMap {
+  StageError error;
+  std::optional<double> rotation_deg;           ///< the transform's turn; empty when no fit
+  std::optional<mapper::Point2> start_shift_m;  ///< where it moves the run's start position
+};
+
+/// The `lines` samples with every room laid onto the truth by its own rigid transform: the
+/// error left when the rooms' placements are taken away, the walls' own shape and smear.
+struct AlignedRooms {
+  StageError error;
+  std::size_t rooms_fitted = 0;  ///< rooms with enough samples near the truth to fit
+};
+
 /// metrics.json `error_breakdown`.
 struct ErrorBreakdown {
   StageError grid;     ///< occupied cells of the raw room grids
   StageError cleaned;  ///< occupied cells of the cleaned grids
   StageError points;   ///< vertices of the extracted polylines
   StageError lines;    ///< samples of the fitted polylines (the map metric's sampling)
+  AlignedMap aligned_map;
+  AlignedRooms aligned_rooms;
   HeadingBreakdown heading;
 };
+
+/// aligned_map and aligned_rooms of `rooms_lines` (each room's `lines` samples, world frame):
+/// `start_m` is the run's start position, for AlignedMap::start_shift_m.
+std::pair<AlignedMap, AlignedRooms> aligned_errors(
+    std::span<const std::vector<mapper::Point2>> rooms_lines, const SegmentIndex& truth,
+    const mapper::Point2& start_m);
 
 /// Collects the stages' points room by room, from inside the mapper's room listener: the trace
 /// (whole grids) is dropped after that call, so only one point per occupied cell, vertex and

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,6 +26,11 @@ class SegmentIndex {
 
   /// Distance from `p` to the nearest segment, metres; +infinity when the index is empty.
   double nearest_distance_m(const mapper::Point2& p) const;
+
+  /// The point of the nearest segment closest to `p` when it lies within `radius_m` (the cells
+  /// of the box p ± radius_m are looked at); empty otherwise.
+  std::optional<mapper::Point2> nearest_point_within(const mapper::Point2& p,
+                                                     double radius_m) const;
 
   /// True when some segment passes within `radius_m` of `p` (a few cells looked at, never a
   /// ring search): the same answer as nearest_distance_m(p) <= radius_m.
