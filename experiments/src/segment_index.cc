@@ -138,11 +138,7 @@ std::optional<Point2> SegmentIndex::nearest_point_within(const Point2& p, double
   for (int y = std::max(0, lo.y); y <= std::min(height_ - 1, hi.y); ++y) {
     for (int x = std::max(0, lo.x); x <= std::min(width_ - 1, hi.x); ++x) {
       for (const std::uint32_t i : bucket(x, y)) {
-        const mapper::Segment& s = segments_[i];
-        const Point2 d = s.b - s.a;
-        const double len2 = d.squaredNorm();
-        const double t = len2 > 0.0 ? std::clamp((p - s.a).dot(d) / len2, 0.0, 1.0) : 0.0;
-        const Point2 q = s.a + t * d;
+        const Point2 q = mapper::closest_point_on_segment(p, segments_[i]);
         const double dist_m = (p - q).norm();
         if (dist_m <= best_m) {
           best_m = dist_m;

@@ -50,6 +50,13 @@ TEST(Segment, DistanceClampsToEndpoints) {
   EXPECT_DOUBLE_EQ(distance_to_segment_m({1.0, 3.0}, s), 3.0);
   EXPECT_DOUBLE_EQ(distance_to_segment_m({5.0, 4.0}, s), 5.0);
   EXPECT_DOUBLE_EQ(polyline_length_m({{0, 0}, {3, 4}, {3, 5}}), 6.0);
+  // The nearest point: the foot of the perpendicular, an end beyond it, the lone point of a
+  // segment of zero length.
+  EXPECT_TRUE(closest_point_on_segment({1.0, 3.0}, s).isApprox(Point2(1.0, 0.0)));
+  EXPECT_TRUE(closest_point_on_segment({5.0, 4.0}, s).isApprox(Point2(2.0, 0.0)));
+  EXPECT_TRUE(closest_point_on_segment({-1.0, -1.0}, s).isApprox(Point2(0.0, 0.0)));
+  EXPECT_TRUE(closest_point_on_segment({3.0, 3.0}, Segment{{1.0, 1.0}, {1.0, 1.0}})
+                  .isApprox(Point2(1.0, 1.0)));
 }
 
 TEST(GridGeometry, WorldCellRoundTrip) {

@@ -26,6 +26,10 @@ inline double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a
 /// Sum of segment lengths of a polyline, metres.
 double polyline_length_m(const Polyline& line);
 
+/// The point of the finite segment `s` nearest to `p` (the foot of the perpendicular, or the
+/// nearer end).
+Point2 closest_point_on_segment(const Point2& p, const Segment& s);
+
 /// Shortest distance from `p` to the finite segment `s`, metres.
 double distance_to_segment_m(const Point2& p, const Segment& s);
 
