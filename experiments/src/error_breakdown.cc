@@ -163,17 +163,15 @@ std::pair<AlignedMap, AlignedRooms> aligned_errors(std::span<const std::vector<P
                                                    const SegmentIndex& truth,
                                                    const Point2& start_m) {
   std::vector<Point2> all;
-  for (const std::vector<Point2>& room : rooms_lines)
+  for (const std::vector<Point2>& room : rooms_lines) {
     all.insert(all.end(), room.begin(), room.end());
+  }
   AlignedMap whole;
   const RigidFit map_fit = fit_rigid(all, truth);
   if (map_fit.fitted) {
     whole.rotation_deg = map_fit.transform.theta_rad * kDegPerRad;
     whole.start_shift_m = map_fit.transform.transform(start_m) - start_m;
   }
-  for (Point2& p : all) p = map_fit.transform.transform(p);
-  std::vector<double> whole_m = nearest_distances_m(truth, all);
-  whole.error = stage_error(whole_m);
 
   // Each room from where the whole map's fit put it, by its own fit with the near gates only:
   // a room of one or two short walls pulled from a metre away could snap onto its neighbour's.
@@ -181,16 +179,18 @@ std::pair<AlignedMap, AlignedRooms> aligned_errors(std::span<const std::vector<P
   room_options.gates_m = {0.4, 0.25};
   room_options.min_pairs = 20;  // 1 m of wall at the 5 cm sampling
   AlignedRooms rooms;
-  std::vector<double> rooms_m;
+  std::vector<double> whole_m, rooms_m;
   for (const std::vector<Point2>& room : rooms_lines) {
     std::vector<Point2> moved = room;
     for (Point2& p : moved) p = map_fit.transform.transform(p);
+    append(whole_m, nearest_distances_m(truth, moved));
     // A room too small to fit (or with nothing near the truth) stays where the map's fit put it.
     const RigidFit room_fit = fit_rigid(moved, truth, room_options);
     if (room_fit.fitted) ++rooms.rooms_fitted;
     for (Point2& p : moved) p = room_fit.transform.transform(p);
     append(rooms_m, nearest_distances_m(truth, moved));
   }
+  whole.error = stage_error(whole_m);
   rooms.error = stage_error(rooms_m);
   return {whole, rooms};
 }
