@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""Tests scripts/gen-building's room sizes (`--room-sizes-m A-B`).
+
+    check_sizes.py GEN_BUILDING COGMAP GENERATED_DIR WORK_DIR
+
+1. The buildings made before sizes could vary come out the same: each world and experiment in
+   GENERATED_DIR (tests/integration/generated) is made again from the command on its first line
+   and must match it byte for byte below that line.
+2. With sizes: every column's width and row's depth of a block, and every office's width and
+   each office row's depth of a corridor, lies within A-B and they are not all equal; every
+   route point lies inside the building; `cogmap world check` accepts the world.
+3. A range a door cannot fit in (A < 3 m) is refused with exit 2, naming the option.
+Prints what failed and exits 1, or exits 0.
+"""
+import glob
+import json
+import os
+import re
+import shlex
+import subprocess
+import sys
+
+GEN, COGMAP, GENERATED, WORK = sys.argv[1:5]
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+
+
+def gen(args, out):
+    return subprocess.run([sys.executable, GEN] + args + ["--out", out], capture_output=True,
+                          text=True)
+
+
+# 1. Unchanged buildings.
+for world in sorted(glob.glob(os.path.join(GENERATED, "*.world.yaml"))):
+    with open(world) as f:
+        first = f.readline()
+    args = shlex.split(first.split("scripts/gen-building", 1)[1])
+    if "--out" in args:
+        i = args.index("--out")
+        del args[i:i + 2]
+    out = os.path.join(WORK, "again")
+    r = gen(args, out)
+    check(r.returncode == 0, f"{world}: gen-building failed: {r.stderr}")
+    name = os.path.basename(world)[: -len(".world.yaml")]
+    for kind in ("world", "route", "explore"):
+        old = os.path.join(GENERATED, f"{name}.{kind}.yaml")
+        if not os.path.exists(old):
+            continue
+        with open(old) as a, open(os.path.join(out, f"{name}.{kind}.yaml")) as b:
+            check(a.readlines()[1:] == b.readlines()[1:], f"{old} is not made the same any more")
+
+
+def read_world(path):
+    """The generator's own world format, read without a YAML library: its polylines (one JSON
+    list a line) and its description."""
+    world = {"polylines": [], "description": ""}
+    with open(path) as f:
+        for line in f:
+            if line.startswith("    - [["):
+                world["polylines"].append(json.loads(line.strip()[2:]))
+            elif line.startswith("description: "):
+                world["description"] = line[len("description: "):].strip()
+    return world
+
+
+def route_of(path):
+    with open(path) as f:
+        for line in f:
+            if line.startswith("  waypoints: "):
+                return json.loads(line[len("  waypoints: "):])
+    return []
+
+
+def lines_of(world):
+    """x of the vertical and y of the horizontal wall lines, outline included."""
+    xs, ys = set(), set()
+    for pl in world["polylines"]:
+        for (x1, y1), (x2, y2) in zip(pl, pl[1:]):
+            if abs(x1 - x2) < 1e-9:
+                xs.add(round(x1, 3))
+            if abs(y1 - y2) < 1e-9:
+                ys.add(round(y1, 3))
+    return sorted(xs), sorted(ys)
+
+
+def within(values, lo, hi, what):
+    gaps = [round(b - a, 3) for a, b in zip(values, values[1:])]
+    check(all(lo - 1e-6 <= g <= hi + 1e-6 for g in gaps), f"{what}: {gaps} not within {lo}-{hi}")
+    return gaps
+
+
+# 2. Sized buildings (no rotation: the wall lines stay axis-parallel).
+cases = [("block --rows 3 --cols 4 --seed 7 --room-sizes-m 3.2-8.5 --clutter 1", 3.2, 8.5),
+         ("corridor --offices 5 --seed 8 --corridor-width-m 2.2 --room-sizes-m 3-7", 3.0, 7.0)]
+for args, lo, hi in cases:
+    out = os.path.join(WORK, "sized")
+    r = gen(args.split(), out)
+    check(r.returncode == 0, f"{args}: exit {r.returncode}: {r.stderr}")
+    if r.returncode != 0:
+        continue
+    name = r.stdout.strip()
+    path = os.path.join(out, f"{name}.world.yaml")
+    world = read_world(path)
+    xs, ys = lines_of(world)
+    widths = within(xs, lo, hi, f"{args}: widths")
+    if args.startswith("block"):
+        depths = within(ys, lo, hi, f"{args}: depths")
+    else:
+        # Office rows: outline to corridor wall on each side; the corridor between is 2.2 m.
+        check(abs(ys[2] - ys[1] - 2.2) < 1e-6, f"{args}: corridor {ys}")
+        depths = within([ys[0], ys[1]], lo, hi, f"{args}: south row") + \
+            within([ys[2], ys[3]], lo, hi, f"{args}: north row")
+    check(len(set(widths + depths)) > 2, f"{args}: the sizes do not vary: {widths} {depths}")
+    check(f"{lo:g}-{hi:g} m" in world["description"], f"{args}: {world['description']!r}")
+    route = route_of(os.path.join(out, f"{name}.route.yaml"))
+    check(len(route) > 4, f"{args}: no route")
+    inside = all(xs[0] < x < xs[-1] and ys[0] < y < ys[-1] for x, y in route)
+    check(inside, f"{args}: a route point outside the building")
+    r = subprocess.run([COGMAP, "world", "check", path], capture_output=True, text=True)
+    check(r.returncode == 0, f"{args}: cogmap world check: {r.stdout}{r.stderr}")
+
+# 3. A range too small for a door.
+r = gen("block --rows 2 --cols 2 --room-sizes-m 2-4".split(), os.path.join(WORK, "never"))
+check(r.returncode == 2 and re.search(r"--room-sizes-m.*'2-4'", r.stderr) is not None,
+      f"--room-sizes-m 2-4: exit {r.returncode}, {r.stderr!r}")
+check(not os.path.exists(os.path.join(WORK, "never")), "--room-sizes-m 2-4 wrote a building")
+
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
