@@ -120,6 +120,31 @@ TEST(DoorProbe, DoesNotProbeForAWaypointBeyondTheSonarsRange) {
   EXPECT_EQ(allowed->trace().mode, NavMode::kDoorProbe);
 }
 
+// A waypoint given up (a door not found) leaves the route's next point, a room's centre, behind
+// that door's wall by the room's half-depth: in rooms over 5 m beyond probe_max_goal_m. Right
+// after a give-up the probe reaches probe_max_goal_after_skip_m (8 m) instead. Here the first
+// waypoint, 3 m to the left, is given up after give_up_s (the robot does not move); the next,
+// 7 m ahead behind the wall, is then probed for.
+TEST(DoorProbe, ProbesFartherForTheWaypointAfterOneGivenUp) {
+  auto run = [](const RouteOptions& options, std::vector<Point2> route) {
+    Probe p;
+    auto c = make_route_follower(options, std::move(route));
+    for (int i = 0; i <= 15; ++i) p.step(*c, i, 1.55);  // t = 0 .. 1.5 s
+    return std::pair{c->trace().mode, c->trace().skipped_waypoints};
+  };
+  RouteOptions options;
+  options.give_up_s = 1.0;
+  const auto [after_skip, skipped] = run(options, {Point2(0.0, 3.0), Point2(7.0, 0.0)});
+  EXPECT_EQ(skipped, 1u);
+  EXPECT_EQ(after_skip, NavMode::kDoorProbe);
+  // Not without the give-up, nor with the widening off, nor beyond it.
+  EXPECT_NE(run(options, {Point2(7.0, 0.0)}).first, NavMode::kDoorProbe);
+  RouteOptions narrow = options;
+  narrow.door.probe_max_goal_after_skip_m = narrow.door.probe_max_goal_m;
+  EXPECT_NE(run(narrow, {Point2(0.0, 3.0), Point2(7.0, 0.0)}).first, NavMode::kDoorProbe);
+  EXPECT_NE(run(options, {Point2(0.0, 3.0), Point2(8.1, 0.0)}).first, NavMode::kDoorProbe);
+}
+
 // Standing still in front of the wall, the probe gives up after probe_stall_s (3 s) without
 // coming progress_m nearer, before the 4 s stuck recovery.
 TEST(DoorProbe, GivesUpAfterProbeStallWithoutProgress) {

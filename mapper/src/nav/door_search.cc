@@ -119,15 +119,15 @@ std::optional<Opening> WallProfile::gap(double min_width_m, double max_width_m, 
 
 bool DoorSearch::start(const std::vector<ObstaclePoint>& obstacles, const Pose2& pose,
                        const Point2& goal_m, const std::optional<Point2>& then_m, double lane_m,
-                       double time_s) {
+                       double time_s, double max_goal_m) {
   const Point2 here = pose.translation();
-  if ((goal_m - here).norm() > options_.search_max_goal_m) return false;
+  if ((goal_m - here).norm() > max_goal_m) return false;
   const auto wall = blocking_wall(obstacles, here, goal_m, lane_m, options_.probe_range_m,
                                   options_.search_max_rms_m);
   if (!wall) return false;
   const auto beyond = [&](const Point2& p) { return (p - wall->point_m).dot(wall->normal); };
   double farthest = beyond(goal_m);
-  if (then_m && (*then_m - here).norm() <= options_.search_max_goal_m) {
+  if (then_m && (*then_m - here).norm() <= max_goal_m) {
     farthest = std::max(farthest, beyond(*then_m));
   }
   if (farthest < options_.search_min_beyond_m) return false;

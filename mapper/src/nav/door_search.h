@@ -79,8 +79,9 @@ class DoorSearch {
   /// cross that wall here (a corridor's corner point the estimate's drift puts behind the end
   /// wall, its next leg tens of metres long).
   /// `lane_m`: how near the line to the goal an echo must lie to block it (VFH's safety radius).
+  /// `max_goal_m`: the goal's distance limit, search_max_goal_m unless the caller widens it.
   bool start(const std::vector<ObstaclePoint>& obstacles, const Pose2& pose, const Point2& goal_m,
-             const std::optional<Point2>& then_m, double lane_m, double time_s);
+             const std::optional<Point2>& then_m, double lane_m, double time_s, double max_goal_m);
   bool active() const { return profile_.has_value() || heard_.has_value(); }
   /// A gap has been heard and the robot is on its way to (or turning at) its approach point.
   bool gap_heard() const { return heard_.has_value(); }

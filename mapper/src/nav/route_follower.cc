@@ -39,6 +39,7 @@ class RouteFollower final : public ReroutableFollower {
     core_.sense(input, goal_range_m);
     if (reached_behind_obstacle(here)) {
       next_waypoint(waypoints_[index_], now);
+      after_give_up_ = false;
       if (done()) return core_.stop(NavMode::kDone);
     }
     const bool stuck = core_.check_stuck(input);
@@ -52,6 +53,7 @@ class RouteFollower final : public ReroutableFollower {
       // last cycle): give it up, report it, and go on with the next one.
       ++core_.trace().skipped_waypoints;
       next_waypoint(here, now);
+      after_give_up_ = true;
       advance(here, now);
       if (done()) return core_.stop(NavMode::kDone);
     }
@@ -82,7 +84,8 @@ class RouteFollower final : public ReroutableFollower {
     search_due_ = false;
     if (searches_ >= options_.door.search_per_waypoint ||
         !search_.start(core_.field().points(), input.pose, goal, waypoint_after(),
-                       options_.vfh.safety_radius_m, input.frame->time_s)) {
+                       options_.vfh.safety_radius_m, input.frame->time_s,
+                       max_goal_m(options_.door.search_max_goal_m))) {
       return std::nullopt;
     }
     ++searches_;
@@ -101,6 +104,7 @@ class RouteFollower final : public ReroutableFollower {
     search_due_ = false;
     searches_ = 0;
     goal_in_pocket_ = false;
+    after_give_up_ = false;
     best_m_ = std::numeric_limits<double>::infinity();
   }
   const NavTrace& trace() const override { return core_.trace(); }
@@ -114,6 +118,12 @@ class RouteFollower final : public ReroutableFollower {
       return waypoints_[index_ + 1];
     }
     return w;
+  }
+
+  /// How far a waypoint may lie for the probe and the search (`limit_m`, theirs), widened
+  /// right after a waypoint was given up: DoorOptions::probe_max_goal_after_skip_m.
+  double max_goal_m(double limit_m) const {
+    return after_give_up_ ? std::max(limit_m, options_.door.probe_max_goal_after_skip_m) : limit_m;
   }
 
   /// The waypoint after the current one, if there is one.
@@ -220,7 +230,7 @@ class RouteFollower final : public ReroutableFollower {
       probe_failed_at_.reset();
     }
     const double d = (goal - here).norm();
-    if (d > o.probe_max_goal_m) return std::nullopt;
+    if (d > max_goal_m(o.probe_max_goal_m)) return std::nullopt;
     const double now = input.frame->time_s;
     // Only a wall across the line: sensed on both sides of it within VFH's radius (or within
     // the body's half-width of the line), and meeting it at probe_min_angle_deg or more. A
@@ -284,7 +294,10 @@ class RouteFollower final : public ReroutableFollower {
       leg_start_ = position;
       progress_s_ = now;
     }
-    while (!done() && reached(position)) next_waypoint(waypoints_[index_], now);
+    while (!done() && reached(position)) {
+      next_waypoint(waypoints_[index_], now);
+      after_give_up_ = false;
+    }
     if (!done()) {
       const double d = (waypoints_[index_] - position).norm();
       if (d < best_m_ - options_.progress_m) {
@@ -320,6 +333,7 @@ class RouteFollower final : public ReroutableFollower {
   std::optional<double> probe_since_s_;    // probing: when it last came progress_m nearer
   double probe_best_m_ = 0.0;              // ...and how near that was
   bool goal_in_pocket_ = false;            // the door behaviour saw the waypoint in a pocket
+  bool after_give_up_ = false;             // the last waypoint left behind was given up
   bool search_due_ = false;                // the probe stalled this cycle: sweep the wall
   int searches_ = 0;                       // sweeps started for the current waypoint
   NavCore core_;

@@ -139,12 +139,15 @@ struct EdgeOptions {
   double min_loop_m = 10.0;         ///< ...after at least this much travel
 };
 
-/// The explorer's DoorOptions: the door search off; pockets refused, a goal in one given up.
+/// The explorer's DoorOptions: the door search off; pockets refused, a goal in one given up;
+/// no wider probe after a give-up.
 inline DoorOptions explorer_door_options() {
   DoorOptions o;
   o.search_per_waypoint = 0;
   o.beyond_clear_m = 1.1;
   o.give_up_goal_in_pocket = true;
+  // A goal given up is planned anew (and banned), never followed by the plan's next waypoint.
+  o.probe_max_goal_after_skip_m = o.probe_max_goal_m;
   return o;
 }
 

@@ -206,11 +206,18 @@ struct DoorOptions {
   /// a waypoint within probe_range_m behind a sensed wall is approached head-on at the door
   /// speed, which brings the ±10° beams through the gap (at 0.8 m the jambs lie 22° off
   /// their axes) and lets the clearing open it, instead of VFH swinging along the wall.
-  double probe_range_m = 2.5;         ///< a sensed wall across the line to the waypoint nearer
-                                      ///< than this is probed (VFH's window)
-  double probe_max_goal_m = 5.0;      ///< ...while the waypoint lies within the sonar's range
-                                      ///< (as search_max_goal_m): a corridor's next point
-                                      ///< tens of metres on has no door in that wall
+  double probe_range_m = 2.5;     ///< a sensed wall across the line to the waypoint nearer
+                                  ///< than this is probed (VFH's window)
+  double probe_max_goal_m = 5.0;  ///< ...while the waypoint lies within the sonar's range
+                                  ///< (as search_max_goal_m): a corridor's next point
+                                  ///< tens of metres on has no door in that wall
+  /// ...or within this right after a waypoint was given up (a door not found: the next
+  /// waypoint, a room's centre, lies behind that door's wall by the room's half-depth, which in
+  /// rooms larger than 5 m puts it beyond probe_max_goal_m, and VFH alone never finds the way).
+  /// 8 m: a 9 m room's half-depth plus the 1-2 m the robot may stand before the given-up door,
+  /// with margin; a corridor's next point lies tens of metres on. Also for the search.
+  /// Measured on rooms of 3-9 m (docs/algorithms.md, "Door passage": 6.5-11 m a plateau).
+  double probe_max_goal_after_skip_m = 8.0;
   double probe_min_angle_deg = 45.0;  ///< ...meeting the line at least this steeply (a door's
                                       ///< wall is crossed, a corridor side is run along)
   double probe_rearm_m = 1.0;         ///< after a failed probe, probe again only this far away
