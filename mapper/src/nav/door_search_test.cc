@@ -153,6 +153,24 @@ TEST(BlockingWall, NothingOnTheWayOrNoLineIsNoWall) {
   EXPECT_FALSE(blocking_wall(points(blob), Point2(0, 0), Point2(0, 3), 0.33, 2.5, 0.1));
 }
 
+// A sweep starts only for a waypoint within the distance its caller allows (search_max_goal_m,
+// or the route follower's wider limit right after a waypoint was given up): the wall 1 m ahead,
+// the waypoint 7 m on behind it.
+TEST(DoorSearch, StartsOnlyForAWaypointWithinTheGivenDistance) {
+  std::vector<Point2> w;
+  for (int k = -8; k <= 8; ++k) w.emplace_back(0.1 * k, 1.0);
+  const Pose2 robot{0.0, 0.0, std::numbers::pi / 2.0};
+  const DoorOptions options;
+  DoorSearch near(options);
+  EXPECT_FALSE(near.start(points(w), robot, Point2(0.0, 7.0), std::nullopt, 0.33, 0.0,
+                          options.search_max_goal_m));
+  EXPECT_FALSE(near.active());
+  DoorSearch wide(options);
+  EXPECT_TRUE(wide.start(points(w), robot, Point2(0.0, 7.0), std::nullopt, 0.33, 0.0,
+                         options.probe_max_goal_after_skip_m));
+  EXPECT_TRUE(wide.active());
+}
+
 // Two rooms, x 0-5 and 5-10 (5 m deep), a 0.9 m door at y 2.6-3.5 in the wall x = 5. The
 // waypoint (7, 1.3) lies behind the wall 1.75 m below the door's centre. The exact sonar here
 // does not smear the jambs as the simulated and real ones do (which is what makes the front
