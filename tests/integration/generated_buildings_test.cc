@@ -75,9 +75,14 @@ TEST_P(GeneratedBuilding, CompletesTheRouteByTheEstimateWithoutContact) {
 
 INSTANTIATE_TEST_SUITE_P(
     Kinds, GeneratedBuilding,
-    ::testing::Values(BuildingCase{"block_2x2_s11", 4, 5, 0.060},  // rotated 15°
-                      BuildingCase{"block_3x3_s15", 9, 5, 0.363},  // rotated 7°, 2 extra doors
-                      BuildingCase{"corridor_3_w3_s16", 7, 5, 0.178}),  // 3 m corridor, 3 offices
+    ::testing::Values(BuildingCase{"block_2x2_s11", 4, 5, 0.060},      // rotated 15°
+                      BuildingCase{"block_3x3_s15", 9, 5, 0.363},      // rotated 7°, 2 extra doors
+                      BuildingCase{"corridor_3_w3_s16", 7, 5, 0.178},  // 3 m corridor, 3 offices
+                      // Rooms of 6.2-8.3 m (`--room-sizes-m 4.9-8.4`), rotated 171°, an extra
+                      // door: the route passes the walls 3-4 m off. Measured 2026-12-05 (release
+                      // build, seeds 1-5): completed 5, 4 ASRs each, median wall error 0.111,
+                      // 0.064, 0.066, 0.060, 0.099 m.
+                      BuildingCase{"block_2x2_s919240", 4, 5, 0.139}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace
