@@ -38,8 +38,7 @@ class RouteFollower final : public ReroutableFollower {
     const double goal_range_m = (waypoints_[index_] - here).norm() + options_.vfh.safety_radius_m;
     core_.sense(input, goal_range_m);
     if (reached_behind_obstacle(here)) {
-      next_waypoint(waypoints_[index_], now);
-      after_give_up_ = false;
+      next_waypoint(waypoints_[index_], now, /*given_up=*/false);
       if (done()) return core_.stop(NavMode::kDone);
     }
     const bool stuck = core_.check_stuck(input);
@@ -52,8 +51,7 @@ class RouteFollower final : public ReroutableFollower {
       // give_up_s, or it lies in a pocket the body cannot turn in (the door behaviour saw it
       // last cycle): give it up, report it, and go on with the next one.
       ++core_.trace().skipped_waypoints;
-      next_waypoint(here, now);
-      after_give_up_ = true;
+      next_waypoint(here, now, /*given_up=*/true);
       advance(here, now);
       if (done()) return core_.stop(NavMode::kDone);
     }
@@ -275,7 +273,9 @@ class RouteFollower final : public ReroutableFollower {
                         d + 0.1);
   }
 
-  void next_waypoint(const Point2& leg_start, double now) {
+  /// On to the next waypoint; `given_up`: the one left behind was not reached.
+  void next_waypoint(const Point2& leg_start, double now, bool given_up) {
+    after_give_up_ = given_up;
     leg_start_ = leg_start;
     goal_in_pocket_ = false;  // seen for the waypoint just left
     ++index_;
@@ -295,8 +295,7 @@ class RouteFollower final : public ReroutableFollower {
       progress_s_ = now;
     }
     while (!done() && reached(position)) {
-      next_waypoint(waypoints_[index_], now);
-      after_give_up_ = false;
+      next_waypoint(waypoints_[index_], now, /*given_up=*/false);
     }
     if (!done()) {
       const double d = (waypoints_[index_] - position).norm();
