@@ -8,12 +8,15 @@
    and must match it byte for byte below that line.
 2. With sizes: every column's width and row's depth of a block, and every office's width and
    each office row's depth of a corridor, lies within A-B and they are not all equal; every
-   route point lies inside the building; `cogmap world check` accepts the world.
+   route point lies inside the building; `cogmap world check` accepts the world; both
+   experiments' duration_s is 90 s for every 25 m^2 of each room's floor (at least 90 s a room;
+   a corridor counts once), from the wall lines.
 3. A range a door cannot fit in (A < 3 m) is refused with exit 2, naming the option.
 Prints what failed and exits 1, or exits 0.
 """
 import glob
 import json
+import math
 import os
 import re
 import shlex
@@ -87,6 +90,14 @@ def lines_of(world):
     return sorted(xs), sorted(ys)
 
 
+def duration_of(path):
+    with open(path) as f:
+        for line in f:
+            if line.startswith("duration_s: "):
+                return float(line[len("duration_s: "):])
+    return None
+
+
 def within(values, lo, hi, what):
     gaps = [round(b - a, 3) for a, b in zip(values, values[1:])]
     check(all(lo - 1e-6 <= g <= hi + 1e-6 for g in gaps), f"{what}: {gaps} not within {lo}-{hi}")
@@ -114,6 +125,18 @@ for args, lo, hi in cases:
         check(abs(ys[2] - ys[1] - 2.2) < 1e-6, f"{args}: corridor {ys}")
         depths = within([ys[0], ys[1]], lo, hi, f"{args}: south row") + \
             within([ys[2], ys[3]], lo, hi, f"{args}: north row")
+    if args.startswith("block"):
+        areas = [w * d for w in widths for d in depths]
+        hall = 0
+    else:
+        # Offices alternate south (even) and north (odd), two to a column of the same width.
+        offices = int(args.split("--offices ")[1].split()[0])
+        areas = [widths[i // 2] * depths[i % 2] for i in range(offices)]
+        hall = 1
+    want = math.ceil(90 * (sum(max(1.0, a / 25.0) for a in areas) + hall))
+    for kind in ("route", "explore"):
+        got = duration_of(os.path.join(out, f"{name}.{kind}.yaml"))
+        check(got == want, f"{args}: {kind} duration_s {got}, want {want} (areas {areas})")
     check(len(set(widths + depths)) > 2, f"{args}: the sizes do not vary: {widths} {depths}")
     check(f"{lo:g}-{hi:g} m" in world["description"], f"{args}: {world['description']!r}")
     route = route_of(os.path.join(out, f"{name}.route.yaml"))
