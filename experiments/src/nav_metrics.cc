@@ -53,10 +53,64 @@ double footprint_clearance_m(const mapper::Pose2& pose, std::span<const mapper::
   return best;
 }
 
+/// The point of segment ab nearest segment cd (the crossing point when they cross).
+Point2 nearest_on_first(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  if (segments_cross(a, b, c, d)) {
+    const double t = cross(c - a, d - c) / cross(b - a, d - c);
+    return a + t * (b - a);
+  }
+  auto project = [](const Point2& p, const Point2& u, const Point2& v) {
+    const Point2 uv = v - u;
+    const double len_sq = uv.squaredNorm();
+    const double t = len_sq > 0.0 ? std::clamp((p - u).dot(uv) / len_sq, 0.0, 1.0) : 0.0;
+    return Point2(u + t * uv);
+  };
+  // The nearest pair has an endpoint of one segment in it.
+  Point2 best = a;
+  double best_m = std::numeric_limits<double>::infinity();
+  auto consider = [&](const Point2& on_first, const Point2& other) {
+    const double m = (on_first - other).norm();
+    if (m < best_m) {
+      best_m = m;
+      best = on_first;
+    }
+  };
+  consider(a, project(a, c, d));
+  consider(b, project(b, c, d));
+  consider(project(c, a, b), c);
+  consider(project(d, a, b), d);
+  return best;
+}
+
 }  // namespace
 
+std::optional<Point2> nearest_outline_point(const mapper::Pose2& pose,
+                                            std::span<const mapper::Segment> surfaces,
+                                            const mapper::RobotGeometry& robot) {
+  const double hl = 0.5 * robot.length_m, hw = 0.5 * robot.width_m;
+  const std::array<Point2, 4> corners = {
+      pose.transform(Point2(hl, hw)), pose.transform(Point2(-hl, hw)),
+      pose.transform(Point2(-hl, -hw)), pose.transform(Point2(hl, -hw))};
+  std::optional<Point2> best;
+  double best_m = std::numeric_limits<double>::infinity();
+  for (const mapper::Segment& s : surfaces) {
+    for (int i = 0; i < 4; ++i) {
+      const Point2& a = corners[i];
+      const Point2& b = corners[(i + 1) % 4];
+      const double m = segment_segment_m(a, b, s.a, s.b);
+      if (m < best_m) {
+        best_m = m;
+        best = nearest_on_first(a, b, s.a, s.b);
+      }
+    }
+  }
+  if (!best) return std::nullopt;
+  return pose.inverse().transform(*best);
+}
+
 void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::Segment> surfaces,
-                  const mapper::RobotGeometry& robot, const SegmentIndex* index) {
+                  const mapper::RobotGeometry& robot, const SegmentIndex* index,
+                  std::span<const ModeChange> modes) {
   // footprint_clearance_m tests a surface only when its centre is within `reach` of it; a pose
   // with no surface that near (a little beyond, against rounding) has clearance +infinity.
   const double reach =
@@ -64,15 +118,26 @@ void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::
   std::size_t episodes = 0;
   double time_s = 0.0;
   nav.contact_start_s.clear();
+  nav.contact_onsets.clear();
   bool touching = false;
   std::optional<double> last_t;
+  std::size_t row_index = 0;
   for (const TrajectoryRow& r : rows) {
+    const std::size_t i = row_index++;
     if (!r.truth) continue;
     const bool near = !index || index->any_within_m(r.truth->translation(), reach);
     const bool now = near && footprint_clearance_m(*r.truth, surfaces, robot) <= kContactDistanceM;
     if (now && !touching) {
       ++episodes;
       nav.contact_start_s.push_back(r.t_s);
+      ContactOnset onset;
+      onset.t_s = r.t_s;
+      const auto after =
+          std::upper_bound(modes.begin(), modes.end(), i,
+                           [](std::size_t row, const ModeChange& c) { return row < c.first_row; });
+      onset.mode = after == modes.begin() ? "unknown" : mapper::nav::to_string((after - 1)->mode);
+      onset.body_m = nearest_outline_point(*r.truth, surfaces, robot).value_or(Point2(0.0, 0.0));
+      nav.contact_onsets.push_back(std::move(onset));
     }
     if (now && last_t) time_s += r.t_s - *last_t;
     touching = now;

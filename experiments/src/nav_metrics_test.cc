@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "cogmap/experiments/segment_index.h"
@@ -57,6 +59,74 @@ TEST(NavMetrics, ContactEpisodesFromTheTrueFootprint) {
     ASSERT_TRUE(nav.contact_s.has_value());
     EXPECT_NEAR(*nav.contact_s, 0.4, 1e-12);  // each touching frame counts the 0.1 s before it
   }
+}
+
+// How each episode began: the mode in force at its first frame (from the mode changes by row)
+// and the touching point of the outline in the body frame.
+TEST(NavMetrics, ContactOnsetsNameTheModeAndThePlaceOnTheBody) {
+  const std::vector<Segment> wall{{{0.0, 1.0}, {10.0, 1.0}}};
+  const mapper::RobotGeometry robot = mapper::p2at_geometry();
+  std::vector<TrajectoryRow> rows;
+  // Rows 0-3: the left side nears the wall and touches at row 2 (the whole side at 0.019 m:
+  // the nearest point is one end of it).
+  for (const double gap : {0.5, 0.3, 0.019, 0.5})
+    rows.push_back(row_at(0.1 * rows.size(), 5.0, gap));
+  // Row 4: turned to face +y beside the wall's end, the front-left corner 0.015 m from it.
+  TrajectoryRow end;
+  end.t_s = 0.4;
+  end.truth = Pose2{10.0 + 0.2525 + 0.015, 1.0 - 0.313, 1.5707963267948966};
+  rows.push_back(end);
+  // Row 5 away again; row 6: backed into the wall from below, heading -80° (facing down and a
+  // little right), so the rear-left corner, 0.352 m above the centre, comes 0.01 m from it.
+  rows.push_back(row_at(0.5, 5.0, 0.5));
+  const double heading = -80.0 * std::numbers::pi / 180.0;
+  const double corner_up_m =
+      std::sin(heading) * -0.313 + std::cos(heading) * 0.2525;  // the rear-left corner's y
+  TrajectoryRow back;
+  back.t_s = 0.6;
+  back.truth = Pose2{5.0, 1.0 - corner_up_m - 0.01, heading};
+  rows.push_back(back);
+  TrajectoryLog log(false);
+  for (const TrajectoryRow& r : rows) log.push_back(r);
+  using mapper::nav::NavMode;
+  const std::vector<ModeChange> modes{
+      {1, NavMode::kDrive}, {4, NavMode::kDoorProbe}, {6, NavMode::kBackOff}};
+
+  NavMetrics nav;
+  add_contacts(nav, log.view(), wall, robot, nullptr, modes);
+  ASSERT_EQ(nav.contact_onsets.size(), 3u);
+  EXPECT_DOUBLE_EQ(nav.contact_onsets[0].t_s, 0.2);
+  EXPECT_EQ(nav.contact_onsets[0].mode, "drive");
+  EXPECT_NEAR(nav.contact_onsets[0].body_m.y(), 0.2525, 1e-9);  // the left side
+  EXPECT_NEAR(std::abs(nav.contact_onsets[0].body_m.x()), 0.313, 1e-9);
+  EXPECT_EQ(nav.contact_onsets[1].mode, "door_probe");
+  EXPECT_NEAR(nav.contact_onsets[1].body_m.x(), 0.313, 1e-9);  // the front-left corner
+  EXPECT_NEAR(nav.contact_onsets[1].body_m.y(), 0.2525, 1e-9);
+  EXPECT_EQ(nav.contact_onsets[2].mode, "back_off");
+  EXPECT_NEAR(nav.contact_onsets[2].body_m.x(), -0.313, 1e-9);  // the rear-left corner
+  EXPECT_NEAR(nav.contact_onsets[2].body_m.y(), 0.2525, 1e-9);
+
+  // Without modes, and for rows before the first change, the mode is unknown.
+  NavMetrics bare;
+  add_contacts(bare, log.view(), wall, robot);
+  ASSERT_EQ(bare.contact_onsets.size(), 3u);
+  EXPECT_EQ(bare.contact_onsets[0].mode, "unknown");
+  const std::vector<ModeChange> late{{5, NavMode::kDrive}};
+  NavMetrics partly;
+  add_contacts(partly, log.view(), wall, robot, nullptr, late);
+  EXPECT_EQ(partly.contact_onsets[1].mode, "unknown");
+  EXPECT_EQ(partly.contact_onsets[2].mode, "drive");
+}
+
+TEST(NavMetrics, TheNearestOutlinePointOfACrossingIsWhereTheyCross) {
+  const mapper::RobotGeometry robot = mapper::p2at_geometry();
+  // A wall through the body's right side at x = 0.1 (body frame), robot at the origin facing +x.
+  const std::vector<Segment> wall{{{0.1, -0.2}, {0.1, -1.0}}};
+  const auto p = nearest_outline_point(Pose2{0.0, 0.0, 0.0}, wall, robot);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_NEAR(p->x(), 0.1, 1e-9);
+  EXPECT_NEAR(p->y(), -0.2525, 1e-9);
+  EXPECT_FALSE(nearest_outline_point(Pose2{}, {}, robot).has_value());
 }
 
 }  // namespace

@@ -41,6 +41,11 @@ Json nav_json(const NavMetrics& n) {
   nav["contacts"] = opt_any(n.contacts);
   nav["contact_s"] = opt(n.contact_s);
   nav["contact_start_s"] = n.contacts ? Json(n.contact_start_s) : Json(nullptr);
+  Json onsets = Json::array();
+  for (const ContactOnset& c : n.contact_onsets) {
+    onsets.push_back({{"t_s", c.t_s}, {"mode", c.mode}, {"body_m", {c.body_m.x(), c.body_m.y()}}});
+  }
+  nav["contact_onsets"] = n.contacts ? std::move(onsets) : Json(nullptr);
   nav["distance_m"] = n.distance_m;
   nav["stalled_s"] = n.stalled_s;
   nav["rooms_visited"] = opt_any(n.rooms_visited);

@@ -71,8 +71,9 @@ mapper::SensorFrame without_truth(const mapper::SensorFrame& frame) {
 
 /// The frame loop and its products, kept apart from the writing of files.
 struct SessionResult {
-  TrajectoryLog rows;                 // full chunks on disk: memory does not grow with the run
-  std::vector<NavTraceRow> nav_rows;  // output.nav_trace only
+  TrajectoryLog rows;                    // full chunks on disk: memory does not grow with the run
+  std::vector<NavTraceRow> nav_rows;     // output.nav_trace only
+  std::vector<ModeChange> mode_changes;  // which mode's command led into the rows' frames
   std::optional<bool> route_completed;
   std::optional<double> closed_heading_rad;  // the estimate once the last room is closed
   double sim_time_s = 0.0;
@@ -229,6 +230,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   double stalled_s = 0.0;  // time with a stall flag set (nav block)
   NavMetrics turning;      // odometry turning by commanding mode (nav block)
   std::string mode = mapper::nav::to_string(mapper::nav::NavMode::kIdle);
+  mapper::nav::NavMode mode_in_force = mapper::nav::NavMode::kIdle;  // led into this frame
   std::optional<mapper::Pose2> last_odometry;
   std::optional<double> last_true_theta_rad;  // the drift-by-mode metric's truth
   // Which true surfaces the robot could have sensed (the coverage's denominator) depends only
@@ -262,6 +264,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       if (frame->true_pose) last_true_theta_rad = frame->true_pose->theta_rad;
       last_time_s = seen.time_s;
       session.rows.push_back({frame->time_s, frame->true_pose, odometry, mapper.pose_estimate()});
+      if (session.mode_changes.empty() || session.mode_changes.back().mode != mode_in_force) {
+        session.mode_changes.push_back({session.rows.size() - 1, mode_in_force});
+      }
       if (visible_truth && frame->true_pose) visible_truth->add(frame->true_pose->translation());
       session.sim_time_s = frame->time_s;
       if (options.on_progress && frame->time_s >= next_progress_s) {
@@ -275,6 +280,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       robot.command(cmd);
       const mapper::nav::NavTrace& t = controller->trace();
       mode = mapper::nav::to_string(t.mode);
+      mode_in_force = t.mode;
       if (experiment.nav_trace) {
         session.nav_rows.push_back({seen.time_s, mapper::nav::to_string(t.mode), t.waypoint_index,
                                     t.target_rad, t.direction_rad, t.has_direction,
@@ -391,7 +397,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
     if (truth) {
       m.localization = evaluate_trajectory(rows, session.closed_heading_rad);
       m.error_breakdown = breakdown->finish(rows);
-      add_contacts(m.nav, rows, truth->surfaces, geometry, &breakdown->truth_index());
+      add_contacts(m.nav, rows, truth->surfaces, geometry, &breakdown->truth_index(),
+                   session.mode_changes);
       if (experiment.controller.type == ControllerKind::kExplore) {
         const TrueRooms rooms = count_true_rooms(truth->surfaces, rows);
         if (rooms.measurable) {  // else null: a world too large to rasterise finely

@@ -12,10 +12,30 @@
 
 #include "cogmap/experiments/metrics.h"
 #include "cogmap/experiments/segment_index.h"
+#include "cogmap/mapper/nav/controller.h"
 #include "cogmap/mapper/seam/geometry.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
 
 namespace cogmap::experiments {
+
+/// How a contact episode began (needs truth): what the controller was doing and where on the
+/// body the touch was.
+struct ContactOnset {
+  double t_s = 0.0;
+  /// The mode that commanded the motion into the contact (`to_string(NavMode)`: the last
+  /// command before the frame that touched).
+  std::string mode;
+  /// The point of the footprint's outline nearest the surface touched, body frame (x forward,
+  /// y left), metres: a front corner is (0.313, ±0.2525) on a P2-AT.
+  mapper::Point2 body_m{0.0, 0.0};
+};
+
+/// From row `first_row` on (until the next change), the controller mode whose command led into
+/// each row's frame.
+struct ModeChange {
+  std::size_t first_row = 0;
+  mapper::nav::NavMode mode = mapper::nav::NavMode::kIdle;
+};
 
 /// The nav block.
 struct NavMetrics {
@@ -27,6 +47,7 @@ struct NavMetrics {
   std::optional<std::size_t> contacts;       ///< touches of a wall or obstacle (needs truth)
   std::optional<double> contact_s;           ///< frames in contact × frame time (needs truth)
   std::vector<double> contact_start_s;       ///< when each contact episode began (needs truth)
+  std::vector<ContactOnset> contact_onsets;  ///< the same episodes: mode and place on the body
   double distance_m = 0.0;                   ///< odometry path length (the robot's own count)
   double stalled_s = 0.0;                    ///< time with either stall flag set
   std::optional<std::size_t> rooms_visited;  ///< explore: rooms the explorer entered
@@ -64,11 +85,20 @@ void add_mode_drift(NavMetrics& nav, const std::string& mode, double odometry_dt
 inline constexpr double kContactDistanceM = 0.02;
 
 /// Counts contact episodes (a run of consecutive frames in contact is one) and their time,
-/// from the true poses of `rows` (rows without truth are skipped) against `surfaces`.
+/// from the true poses of `rows` (rows without truth are skipped) against `surfaces`, and how
+/// each began (contact_onsets): `modes`, in row order, says from which row on which controller
+/// mode's command led into the rows' frames (rows before the first change: "unknown").
 /// `index`, if given, must index exactly `surfaces`: it only skips, untested, the poses with no
 /// surface within reach of the footprint (the answer is the same).
 void add_contacts(NavMetrics& nav, TrajectoryView rows, std::span<const mapper::Segment> surfaces,
-                  const mapper::RobotGeometry& robot, const SegmentIndex* index = nullptr);
+                  const mapper::RobotGeometry& robot, const SegmentIndex* index = nullptr,
+                  std::span<const ModeChange> modes = {});
+
+/// The point of the footprint's outline (a length_m × width_m rectangle about `pose`) nearest
+/// any of `surfaces`, in the body frame (x forward, y left); nullopt without surfaces.
+std::optional<mapper::Point2> nearest_outline_point(const mapper::Pose2& pose,
+                                                    std::span<const mapper::Segment> surfaces,
+                                                    const mapper::RobotGeometry& robot);
 
 /// Odometry path length of `rows`, metres.
 double odometry_distance_m(TrajectoryView rows);
