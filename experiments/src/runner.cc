@@ -71,9 +71,11 @@ mapper::SensorFrame without_truth(const mapper::SensorFrame& frame) {
 
 /// The frame loop and its products, kept apart from the writing of files.
 struct SessionResult {
-  TrajectoryLog rows;                    // full chunks on disk: memory does not grow with the run
-  std::vector<NavTraceRow> nav_rows;     // output.nav_trace only
-  std::vector<ModeChange> mode_changes;  // which mode's command led into the rows' frames
+  TrajectoryLog rows;                 // full chunks on disk: memory does not grow with the run
+  std::vector<NavTraceRow> nav_rows;  // output.nav_trace only
+  // Which mode's command led into the rows' frames: one entry a change (a mode flapping every
+  // frame makes one a frame, 16 bytes against the row's 90 on disk).
+  std::vector<ModeChange> mode_changes;
   std::optional<bool> route_completed;
   std::optional<double> closed_heading_rad;  // the estimate once the last room is closed
   double sim_time_s = 0.0;
@@ -229,8 +231,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   SessionResult session;
   double stalled_s = 0.0;  // time with a stall flag set (nav block)
   NavMetrics turning;      // odometry turning by commanding mode (nav block)
-  std::string mode = mapper::nav::to_string(mapper::nav::NavMode::kIdle);
-  mapper::nav::NavMode mode_in_force = mapper::nav::NavMode::kIdle;  // led into this frame
+  // The mode whose command led into the frame being processed (the last step's).
+  mapper::nav::NavMode mode = mapper::nav::NavMode::kIdle;
   std::optional<mapper::Pose2> last_odometry;
   std::optional<double> last_true_theta_rad;  // the drift-by-mode metric's truth
   // Which true surfaces the robot could have sensed (the coverage's denominator) depends only
@@ -253,10 +255,11 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       stalled_s += (seen.stall_left || seen.stall_right) ? seen.time_s - last_time_s : 0.0;
       const mapper::Pose2 odometry = mapper.odometry_pose();
       if (last_odometry) {
-        add_mode_interval(turning, mode, odometry.theta_rad - last_odometry->theta_rad,
-                          seen.time_s - last_time_s);
+        add_mode_interval(turning, mapper::nav::to_string(mode),
+                          odometry.theta_rad - last_odometry->theta_rad, seen.time_s - last_time_s);
         if (frame->true_pose && last_true_theta_rad) {  // a metric: truth only measures here
-          add_mode_drift(turning, mode, odometry.theta_rad - last_odometry->theta_rad,
+          add_mode_drift(turning, mapper::nav::to_string(mode),
+                         odometry.theta_rad - last_odometry->theta_rad,
                          frame->true_pose->theta_rad - *last_true_theta_rad);
         }
       }
@@ -264,8 +267,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       if (frame->true_pose) last_true_theta_rad = frame->true_pose->theta_rad;
       last_time_s = seen.time_s;
       session.rows.push_back({frame->time_s, frame->true_pose, odometry, mapper.pose_estimate()});
-      if (session.mode_changes.empty() || session.mode_changes.back().mode != mode_in_force) {
-        session.mode_changes.push_back({session.rows.size() - 1, mode_in_force});
+      if (session.mode_changes.empty() || session.mode_changes.back().mode != mode) {
+        session.mode_changes.push_back({session.rows.size() - 1, mode});
       }
       if (visible_truth && frame->true_pose) visible_truth->add(frame->true_pose->translation());
       session.sim_time_s = frame->time_s;
@@ -279,8 +282,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
           nav_input(experiment.controller, seen, frame->true_pose, mapper, geometry));
       robot.command(cmd);
       const mapper::nav::NavTrace& t = controller->trace();
-      mode = mapper::nav::to_string(t.mode);
-      mode_in_force = t.mode;
+      mode = t.mode;
       if (experiment.nav_trace) {
         session.nav_rows.push_back({seen.time_s, mapper::nav::to_string(t.mode), t.waypoint_index,
                                     t.target_rad, t.direction_rad, t.has_direction,
