@@ -60,10 +60,7 @@ Point2 nearest_on_first(const Point2& a, const Point2& b, const Point2& c, const
     return a + t * (b - a);
   }
   auto project = [](const Point2& p, const Point2& u, const Point2& v) {
-    const Point2 uv = v - u;
-    const double len_sq = uv.squaredNorm();
-    const double t = len_sq > 0.0 ? std::clamp((p - u).dot(uv) / len_sq, 0.0, 1.0) : 0.0;
-    return Point2(u + t * uv);
+    return mapper::closest_point_on_segment(p, {u, v});
   };
   // The nearest pair has an endpoint of one segment in it.
   Point2 best = a;
