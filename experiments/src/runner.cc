@@ -255,11 +255,11 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       stalled_s += (seen.stall_left || seen.stall_right) ? seen.time_s - last_time_s : 0.0;
       const mapper::Pose2 odometry = mapper.odometry_pose();
       if (last_odometry) {
-        add_mode_interval(turning, mapper::nav::to_string(mode),
-                          odometry.theta_rad - last_odometry->theta_rad, seen.time_s - last_time_s);
+        const std::string mode_name = mapper::nav::to_string(mode);
+        add_mode_interval(turning, mode_name, odometry.theta_rad - last_odometry->theta_rad,
+                          seen.time_s - last_time_s);
         if (frame->true_pose && last_true_theta_rad) {  // a metric: truth only measures here
-          add_mode_drift(turning, mapper::nav::to_string(mode),
-                         odometry.theta_rad - last_odometry->theta_rad,
+          add_mode_drift(turning, mode_name, odometry.theta_rad - last_odometry->theta_rad,
                          frame->true_pose->theta_rad - *last_true_theta_rad);
         }
       }
