@@ -301,9 +301,12 @@ struct RouteOptions {
   SafetyOptions safety;
   RecoveryOptions recovery;
   DoorOptions door;
-  double give_up_s = 40.0;        ///< a waypoint not approached by progress_m within this long is
-                                  ///< given up: the longest leg in a 5 x 5 m room (7 m) takes 14 s,
-                                  ///< plus a door passage (~10 s) and a recovery, with margin
+  double give_up_s = 60.0;        ///< a waypoint not approached by progress_m within this long is
+                                  ///< given up: a door found only at the second try (a probe that
+                                  ///< stalls, the door search's sweep along the wall, a passage
+                                  ///< lost to a phantom jamb, then the real one) takes 40-60 s;
+                                  ///< measured 25 / 40 / 60 / 80 s (docs/algorithms.md, "Route
+                                  ///< follower"), 60 is the knee
   double progress_m = 0.3;        ///< what counts as approaching
   double direct_range_m = 2.5;    ///< a waypoint this near (VFH's window) with a clear lane
                                   ///< to it is driven straight at, without VFH. 0 = always
