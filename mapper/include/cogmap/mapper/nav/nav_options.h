@@ -305,8 +305,8 @@ struct RouteOptions {
                                   ///< given up: a door found only at the second try (a probe that
                                   ///< stalls, the door search's sweep along the wall, a passage
                                   ///< lost to a phantom jamb, then the real one) takes 40-60 s;
-                                  ///< measured 25 / 40 / 60 / 80 s (docs/algorithms.md, "Route
-                                  ///< follower"), 60 is the knee
+                                  ///< measured 25 / 40 / 60 / 80 s (docs/algorithms.md, "A minute
+                                  ///< per waypoint"), 60 is the knee
   double progress_m = 0.3;        ///< what counts as approaching
   double direct_range_m = 2.5;    ///< a waypoint this near (VFH's window) with a clear lane
                                   ///< to it is driven straight at, without VFH. 0 = always
