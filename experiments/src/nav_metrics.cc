@@ -6,16 +6,15 @@
 #include <limits>
 #include <optional>
 
+#include "cogmap/mapper/seam/geometry.h"
+
 namespace cogmap::experiments {
 namespace {
 
 using mapper::Point2;
 
 double point_segment_m(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 ab = b - a;
-  const double len_sq = ab.squaredNorm();
-  const double t = len_sq > 0.0 ? std::clamp((p - a).dot(ab) / len_sq, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
+  return mapper::distance_to_segment_m(p, mapper::Segment{a, b});
 }
 
 double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }

@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include "cogmap/mapper/seam/geometry.h"
+
 namespace cogmap::experiments {
 namespace {
 
@@ -22,10 +24,7 @@ struct Raster {
 };
 
 double point_segment_m(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 ab = b - a;
-  const double len_sq = ab.squaredNorm();
-  const double t = len_sq > 0.0 ? std::clamp((p - a).dot(ab) / len_sq, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
+  return mapper::distance_to_segment_m(p, mapper::Segment{a, b});
 }
 
 /// Indices of the cells whose centres lie in [lo, hi] along an axis starting at `origin`,

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "cogmap/mapper/seam/geometry.h"
 #include "nav/nav_test_util.h"
 
 namespace cogmap::mapper::nav::testing {
@@ -26,12 +27,6 @@ inline double ray_hit(const Point2& o, const Point2& d, const Segment& s) {
   const double t = (w.x() * e.y() - w.y() * e.x()) / den;
   const double u = (w.x() * d.y() - w.y() * d.x()) / den;
   return t > 0.0 && u >= 0.0 && u <= 1.0 ? t : kInf;
-}
-
-inline double point_segment_m(const Point2& p, const Segment& s) {
-  const Point2 e = s.b - s.a;
-  const double t = std::clamp((p - s.a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-  return (p - (s.a + t * e)).norm();
 }
 
 struct World {
@@ -58,7 +53,7 @@ struct World {
 
   double clearance_m(const Point2& p) const {
     double c = kInf;
-    for (const Segment& s : walls) c = std::min(c, point_segment_m(p, s));
+    for (const Segment& s : walls) c = std::min(c, distance_to_segment_m(p, s));
     return c;
   }
 };
