@@ -213,7 +213,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "door_fix_drift_sd_per_m",
                      "relax",
                      "relax_wall_thickness_m",
-                     "odometry_curvature_gain"});
+                     "odometry_curvature_gain",
+                     "held_turn"});
   mapper::MapperOptions o;
   if (const auto g = block.child("grid")) {
     const std::string name = g->as<std::string>();
@@ -345,6 +346,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   // changes by half either way is no skid-steer any more.
   o.odometry_calibration.curvature_gain =
       number_in(block, "odometry_curvature_gain", -0.5, 0.5, o.odometry_calibration.curvature_gain);
+  // A turn on the spot the sonar ring did not see (docs/algorithms.md, "Turns made while held").
+  o.held_turn.enabled = block.get_or<bool>("held_turn", o.held_turn.enabled);
   if (const auto l = block.child("localization")) {
     const std::string s = l->as<std::string>();
     if (s == "em") {

@@ -182,6 +182,10 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NE(error_of(p, {"mapper.odometry_curvature_gain=0.6"}).find("[-0.5, 0.5]"),
             std::string::npos);
   EXPECT_NE(error_of(p, {"mapper.odometry_curvature_gain=nan"}), "no error");
+  // Turns made while held: on unless switched off; a boolean.
+  EXPECT_TRUE(defaults.mapper.held_turn.enabled);
+  EXPECT_FALSE(load_experiment(p, {"mapper.held_turn=false"}).mapper.held_turn.enabled);
+  EXPECT_NE(error_of(p, {"mapper.held_turn=3"}), "no error");
   // Long rooms: a route keeps the thesis's rule (0), an explorer cuts at 4.5 m, unless the
   // experiment says otherwise.
   EXPECT_EQ(defaults.mapper.max_room_travel_m, 0.0);

@@ -182,6 +182,7 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"unknown_sonar", m.rejected.unknown_sonar},
                      {"total", m.rejected.total()}}}};
   j["door_fixes"] = {{"count", m.door_fixes}, {"total_m", m.door_fix_total_m}};
+  j["held_turns"] = {{"count", m.held_turns}, {"removed_deg", m.held_turn_removed_deg}};
   if (m.relaxation) {
     j["relaxation"] = {{"rooms_moved", m.relaxation->rooms_moved},
                        {"total_m", m.relaxation->total_m},

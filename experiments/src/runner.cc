@@ -346,6 +346,8 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.rejected = stats.rejected;
   m.door_fixes = stats.door_fixes;
   m.door_fix_total_m = stats.door_fix_abs_m;
+  m.held_turns = stats.held_turns;
+  m.held_turn_removed_deg = stats.held_turn_removed_abs_rad * 180.0 / std::numbers::pi;
   m.relaxation = relaxation_metrics(experiment.mapper, stats);
   m.scan_match = scan_match_metrics(experiment.mapper, stats);
   m.build_time_s = stats.build_time_s;

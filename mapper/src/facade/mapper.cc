@@ -61,6 +61,7 @@ struct Mapper::Impl {
   double scan_rotation_var_rad2 = 0.0;
   double scan_shift_var_m2 = 0.0;
   OdometryRecalibrator recalibrator;
+  HeldTurnFilter held_turn;  ///< options.held_turn
   std::optional<Pose2> previous_odometry;
   AsrGraph graph;
   MapperStats stats;
@@ -114,7 +115,8 @@ struct Mapper::Impl {
         relaxation(opts.relaxation),
         scan_match(opts.scan_match, geometry),
         recalibrator(applied_curvature_gain(opts.odometry_calibration, geometry),
-                     geometry.odometry_track_m) {
+                     geometry.odometry_track_m),
+        held_turn(opts.held_turn) {
     options.builder.max_sonar_range_m = geometry.sonar_max_range_m;
   }
 
@@ -385,7 +387,10 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   ++m.stats.frames;
   // Everything below sees the odometry re-integrated for the base's arcs (as reported when
   // options.odometry_calibration.curvature_gain is 0).
-  const Pose2 odometry = m.recalibrator.update(frame.odometry);
+  // ...and with the turns made while the body was held taken out.
+  const Pose2 odometry = m.held_turn.update(m.recalibrator.update(frame.odometry), frame);
+  m.stats.held_turns = m.held_turn.detections();
+  m.stats.held_turn_removed_abs_rad = m.held_turn.removed_abs_rad();
   const double turned_rad =
       m.previous_odometry ? wrap_angle_rad(odometry.theta_rad - m.previous_odometry->theta_rad)
                           : 0.0;

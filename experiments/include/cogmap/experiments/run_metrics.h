@@ -74,8 +74,10 @@ struct RunMetrics {
   std::optional<ErrorBreakdown> error_breakdown;     ///< per-stage error; needs ground truth
   std::size_t readings_used = 0;
   mapper::RejectedReadings rejected;
-  std::size_t door_fixes = 0;     ///< doorways passed again that moved the estimate
-  double door_fix_total_m = 0.0;  ///< the sum of those moves' lengths
+  std::size_t door_fixes = 0;          ///< doorways passed again that moved the estimate
+  double door_fix_total_m = 0.0;       ///< the sum of those moves' lengths
+  std::size_t held_turns = 0;          ///< turns on the spot found made while the body was held
+  double held_turn_removed_deg = 0.0;  ///< the turn taken out of the odometry for them
   /// The end-of-run relaxation of the rooms' positions (mapper.relax; absent when off).
   struct Relaxation {
     std::size_t rooms_moved = 0;

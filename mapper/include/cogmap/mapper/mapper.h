@@ -16,6 +16,7 @@
 #include "cogmap/mapper/grid/grid_updater.h"
 #include "cogmap/mapper/localization/door_fixes.h"
 #include "cogmap/mapper/localization/glimpse_heading.h"
+#include "cogmap/mapper/localization/held_turn.h"
 #include "cogmap/mapper/localization/localizer.h"
 #include "cogmap/mapper/localization/map_relaxation.h"
 #include "cogmap/mapper/localization/odometry_recalibration.h"
@@ -43,6 +44,9 @@ struct MapperOptions {
   /// A skid-steer's odometry re-integrated with a curvature-dependent track before anything uses
   /// it (curvature_gain 0, or a differential drive: as reported).
   OdometryCalibration odometry_calibration;
+  /// Turns the wheels made while the body was held (the sonar ring unchanged after a turn on
+  /// the spot) are taken out of that odometry (docs/algorithms.md, "Turns made while held").
+  HeldTurnOptions held_turn;
   double min_room_duration_s = 2.0;  ///< boundaries closer in time than this are ignored
   /// A room whose path spans more than this (metres, either axis) ends there, as a distance cut
   /// would: it bounds a room grid to (extent + 2 x sonar range)^2, 210 m -> 4.4 M cells of 10 cm
@@ -88,6 +92,8 @@ struct MapperStats {
   double relaxation_abs_m = 0.0;             ///< Σ |those shifts|
   double relaxation_max_m = 0.0;             ///< the largest
   double relaxation_wall_thickness_m = 0.0;  ///< as the relaxation estimated it
+  std::size_t held_turns = 0;                ///< times the body was found held in a turn
+  double held_turn_removed_abs_rad = 0.0;    ///< Σ |turn taken out of the odometry|
   std::size_t relaxation_pairs = 0;          ///< wall pairs it used (same side and two faces)
 };
 
