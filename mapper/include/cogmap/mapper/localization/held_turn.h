@@ -9,8 +9,9 @@
 /// its range should change; if nearly every transducer reads what it read before the turn,
 /// the body did not turn. Then the turn since the first such unchanged reading is taken out
 /// of the odometry the mapper uses, and so is every further turn until a transducer reads
-/// something new. A robot spinning in the exact centre of a round room looks the same
-/// (nothing in a building is), and one with no echo within max_range_m is never judged.
+/// something new. A robot spinning in the exact centre of a round room (or of a square one,
+/// by exactly 90°) looks the same; none of the measured runs did. One with no echo within
+/// max_range_m, or moving, is never judged.
 
 #include <cstddef>
 #include <deque>
