@@ -15,9 +15,10 @@ void HeldTurnFilter::compare(const SonarReading& r, const Point2& at) {
   const bool near =
       r.echo && std::isfinite(r.range_m) && r.range_m > 0.0 && r.range_m <= options_.max_range_m;
   std::optional<Reading>& last = last_reading_[i];
+  const bool turned_since = last && std::abs(turn_rad_ - last->turn_rad) >=
+                                        options_.min_turn_deg * std::numbers::pi / 180.0;
   if (near && last && r.time_s - last->time_s <= options_.window_s &&
-      (at - last->at).norm() <= options_.max_shift_m &&
-      std::abs(turn_rad_ - last->turn_rad) >= options_.min_turn_deg * std::numbers::pi / 180.0) {
+      (at - last->at).norm() <= options_.max_shift_m && turned_since) {
     comparisons_.push_back(
         {r.time_s, std::abs(r.range_m - last->range_m) <= options_.same_m, last->turn_rad});
   }
@@ -26,9 +27,7 @@ void HeldTurnFilter::compare(const SonarReading& r, const Point2& at) {
   if (!near) {
     last.reset();
   } else if (!last || (at - last->at).norm() > options_.max_shift_m ||
-             r.time_s - last->time_s > options_.window_s ||
-             std::abs(turn_rad_ - last->turn_rad) >=
-                 options_.min_turn_deg * std::numbers::pi / 180.0) {
+             r.time_s - last->time_s > options_.window_s || turned_since) {
     last = Reading{r.range_m, turn_rad_, at, r.time_s};
   }
 }
