@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <new>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -154,6 +156,19 @@ TEST(SonarFirstHeard, TracesABounceThatComesBeforeADirectEcho) {
   expect_prefixes(scene, &index, cone, options, bounce_before_direct);
   expect_prefixes(scene, nullptr, cone, options, bounce_before_direct);
   EXPECT_EQ(bounce_before_direct, 2);  // once per call above
+}
+
+// The test above relies on a default cone sitting at the origin, whatever the memory it is made
+// in held before (an Eigen vector left uninitialised took the stack garbage of earlier tests).
+TEST(SonarFirstHeard, DefaultConeSitsAtTheOriginWhateverTheMemoryHeld) {
+  alignas(Cone) unsigned char bytes[sizeof(Cone)];
+  volatile unsigned char* garbage = bytes;  // volatile: the compiler may not drop these stores
+  for (std::size_t i = 0; i < sizeof(bytes); ++i) garbage[i] = 0xA5;
+  const Cone* cone = new (bytes) Cone;
+  EXPECT_TRUE(same_bits(cone->origin.x(), 0.0));
+  EXPECT_TRUE(same_bits(cone->origin.y(), 0.0));
+  EXPECT_EQ(cone->axis_rad, 0.0);
+  EXPECT_EQ(cone->max_range_m, 5.0);
 }
 
 TEST(SonarFirstHeard, NonFiniteConeFallsBackToTheFullList) {

@@ -38,8 +38,8 @@ mapper::Point2 reflect(const mapper::Point2& dir, const mapper::Point2& normal);
 
 /// The beam of one transducer, world frame.
 struct Cone {
-  mapper::Point2 origin;  ///< transducer position, metres
-  double axis_rad = 0.0;  ///< beam axis heading, radians
+  mapper::Point2 origin{0.0, 0.0};  ///< transducer position, metres
+  double axis_rad = 0.0;            ///< beam axis heading, radians
   double max_range_m = 5.0;
 };
 
