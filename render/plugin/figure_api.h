@@ -8,7 +8,7 @@
 namespace cogmap::render::plugin {
 
 /// Raise when any signature below or a struct passed through it changes.
-inline constexpr int kFigureApiVersion = 2;
+inline constexpr int kFigureApiVersion = 3;
 
 /// The plugin's one exported symbol: `const FigureApi* cogmap_render_figure_api()`.
 inline constexpr const char* kEntryPoint = "cogmap_render_figure_api";
@@ -24,6 +24,11 @@ struct FigureApi {
   unsigned long map_figure_size = sizeof(MapFigure);
   unsigned long plot_series_size = sizeof(PlotSeries);
   unsigned long map_error_figure_size = sizeof(MapErrorFigure);
+  // The mapper's own types cross too: a plugin built against another AsrTrace reads garbage.
+  unsigned long asr_trace_size = sizeof(mapper::AsrTrace);
+  unsigned long asr_graph_size = sizeof(mapper::AsrGraph);
+  unsigned long asr_node_size = sizeof(mapper::AsrNode);
+  unsigned long asr_edge_size = sizeof(mapper::AsrEdge);
   void (*room_stages)(const mapper::AsrTrace&, const std::string&, const std::filesystem::path&,
                       const Style&) = nullptr;
   void (*map)(const MapFigure&, const std::filesystem::path&, const Style&) = nullptr;

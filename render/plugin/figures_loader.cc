@@ -37,7 +37,11 @@ const FigureApi* load_plugin() {
   if (api == nullptr || api->version != plugin::kFigureApiVersion ||
       api->style_size != sizeof(Style) || api->map_figure_size != sizeof(MapFigure) ||
       api->plot_series_size != sizeof(PlotSeries) ||
-      api->map_error_figure_size != sizeof(MapErrorFigure)) {
+      api->map_error_figure_size != sizeof(MapErrorFigure) ||
+      api->asr_trace_size != sizeof(mapper::AsrTrace) ||
+      api->asr_graph_size != sizeof(mapper::AsrGraph) ||
+      api->asr_node_size != sizeof(mapper::AsrNode) ||
+      api->asr_edge_size != sizeof(mapper::AsrEdge)) {
     throw RendererUnavailable("the figure renderer " + file +
                               " comes from another cogmap build (figure API mismatch)" + advice);
   }

@@ -58,7 +58,9 @@ class RemainingCells {
     --count_;
   }
 
-  /// The remaining cell nearest to `from`; ties broken by alignment with `step`.
+  /// The remaining cell nearest to `from` within kRingLimit cells along x and y, else the
+  /// nearest anywhere (docs/algorithms.md, Stage 2: a corner of the window wins over a nearer
+  /// cell just beyond it); ties broken by alignment with `step`.
   Candidate nearest(CellIndex from, CellIndex step) const {
     Candidate best;
     for (int r = 1; r <= kRingLimit; ++r) {

@@ -79,6 +79,20 @@ TEST(ExtractPoints, FarCellsAreFoundBeyondTheRingSearch) {
   EXPECT_EQ(lines[1], (Chain{{45, 1}, {48, 2}}));
 }
 
+TEST(ExtractPoints, TheWindowComesFirst) {
+  // From (0,0) the ring search meets (16,16) in its last ring (d² = 512) and takes it, although
+  // (17,0) just outside the 33 × 33 window is nearer (d² = 289): the documented rule
+  // (docs/algorithms.md, Stage 2), not Fig. 3.9's literal "next closest". γ = 30 keeps the cells
+  // in one polyline, so the order shows which was taken first.
+  const auto lines = extract_points(grid_with(20, 20, {{0, 0}, {16, 16}, {17, 0}}), kEpsilon, 30.0);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0], (Chain{{0, 0}, {16, 16}, {17, 0}}));
+  // Nothing in the window: the nearest anywhere.
+  const auto far = extract_points(grid_with(40, 3, {{0, 0}, {30, 2}, {20, 0}}), kEpsilon, 30.0);
+  ASSERT_EQ(far.size(), 1u);
+  EXPECT_EQ(far[0], (Chain{{0, 0}, {20, 0}, {30, 2}}));
+}
+
 TEST(ExtractPoints, OnlyCellsAboveEpsilonAndEmptyGrid) {
   HistogramGrid grid(GridGeometry(0.0, 0.0, 100.0, 5, 5), 0.0f);
   grid.set({1, 1}, 7.0f);  // not > ε

@@ -43,9 +43,11 @@ struct AsrTrace {
 AsrTrace build_room_polylines(const HistogramGrid& grid, const std::vector<Point2>& robot_path,
                               const AsrBuilderOptions& options);
 
-/// The segments of a room's walls whose least-squares fit was accepted (§3.1.8), each as a
-/// two-vertex polyline. A rejected fit stays in the wall as its Douglas-Peucker segment (so the
-/// map keeps it) but is, by the fit's own test, no straight line: it carries no direction.
+/// The segments of a room's walls but the rejected fits (§3.1.8), each as a two-vertex polyline.
+/// A rejected fit stays in the wall as its Douglas-Peucker segment (so the map keeps it) but is,
+/// by the fit's own test, no straight line: it carries no direction. The short joins between a
+/// fitted line and a rejected neighbour's vertex, or two fitted lines that do not meet, come
+/// along (docs/algorithms.md, "Odometry prior on the rotation": leaving them out was measured).
 std::vector<Polyline> accepted_walls(const AsrTrace& trace);
 
 }  // namespace cogmap::mapper
