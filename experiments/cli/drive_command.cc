@@ -20,6 +20,7 @@
 #include "cogmap/hw/p2os_robot.h"
 #include "cogmap/render/renderer.h"
 #include "command_registry.h"
+#include "option_checks.h"
 
 namespace cogmap::cli {
 namespace {
@@ -66,6 +67,7 @@ struct DriveArgs {
   std::vector<std::string> sets;
   bool no_figures = false;
   bool sip_clock = false;
+  bool force = false;  // replace an existing --record file and a finished run in --out
 };
 
 experiments::Experiment default_experiment(const std::vector<std::string>& sets) {
@@ -73,6 +75,15 @@ experiments::Experiment default_experiment(const std::vector<std::string>& sets)
   return experiments::load_experiment_text(
       "name: drive\nworld: none\nduration_s: 60\nrobot: {source: p2os}\ncontroller: {type: none}\n",
       "drive-defaults.yaml", sets);
+}
+
+// --record: never the experiment or its world (the experiment was truncated to a log), never
+// an existing file unless --force: a recording cannot be redone, so none may be lost.
+void check_record_path(const DriveArgs& args, const experiments::Experiment& experiment) {
+  std::vector<fs::path> inputs;
+  if (!args.experiment.empty()) inputs.emplace_back(args.experiment);
+  if (!experiment.world.empty()) inputs.push_back(experiment.world);
+  check_output_file(args.record, "--record", inputs, args.force);
 }
 
 int drive(const DriveArgs& args) {
@@ -97,13 +108,22 @@ int drive(const DriveArgs& args) {
     }
     experiment.duration_s = *args.duration_s;
   }
+  try {
+    // The log is opened (and truncated) once the robot answers: refuse a bad path before.
+    if (!args.record.empty()) check_record_path(args, experiment);
+  } catch (const OutputPathError& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    return kExitBadInput;
+  }
   const fs::path out_dir =
       args.out.empty() ? fs::path("runs") / experiments::safe_path_component(experiment.name)
                        : fs::path(args.out);
   try {
     std::vector<fs::path> inputs{experiment.file};
     if (!args.record.empty()) inputs.push_back(args.record);
-    experiments::check_run_directory(out_dir, inputs);
+    experiments::check_run_directory(
+        out_dir, inputs,
+        args.force ? experiments::FinishedRun::kReplace : experiments::FinishedRun::kKeep);
   } catch (const experiments::RunDirectoryError& e) {
     std::cerr << "cogmap drive: " << e.what() << "\n";
     return kExitBadInput;
@@ -161,6 +181,8 @@ int drive(const DriveArgs& args) {
   mapper::Robot* source = robot.get();
   if (!args.record.empty()) {
     try {
+      const fs::path folder = fs::path(args.record).parent_path();
+      if (!folder.empty()) fs::create_directories(folder);  // as --out and --csv do
       recorder = std::make_unique<hw::RecordingRobot>(*robot, args.record);
       source = recorder.get();
     } catch (const std::exception& e) {
@@ -213,10 +235,13 @@ const CommandRegistrar kRegistrar{
       sub->add_option("--baud", args->baud, "serial rate (9600 at power-up)")
           ->check(CLI::IsMember({9600, 19200, 38400, 57600, 115200}));
       sub->add_option("--tcp", args->tcp, "HOST:PORT (MobileSim listens on 8101)");
-      sub->add_option("--record", args->record, "also write a replayable cogmap log here");
+      sub->add_option("--record", args->record,
+                      "also write a replayable cogmap log here (a new file)");
+      sub->add_flag("--force", args->force,
+                    "replace an existing --record file and a finished run in --out");
       sub->add_option("--out", args->out, "run directory (default runs/<name>)");
       sub->add_option("--duration", args->duration_s, "stop after this many seconds")
-          ->check(CLI::PositiveNumber);
+          ->check(finite_positive());
       sub->add_option("--controller", args->controller, "how to drive (default: experiment's)")
           ->check(CLI::IsMember({"explore", "route", "idle"}));
       sub->add_option("--experiment", args->experiment, "experiment file (mapper, controller)")

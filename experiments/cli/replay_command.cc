@@ -32,6 +32,7 @@ struct ReplayArgs {
   std::vector<std::string> sets;
   std::string format = "auto";
   bool no_figures = false;
+  bool force = false;
   hw::BagImportOptions bag;  ///< --sonar-topic, --odom-topic, --robot (ROS bags only)
 };
 
@@ -102,7 +103,9 @@ int replay(const ReplayArgs& args) {
                         ? fs::path("runs") / experiments::safe_path_component(experiment.name)
                         : fs::path(args.out);
   try {
-    experiments::check_run_directory(options.out_dir, {experiment.file, fs::path(args.log)});
+    experiments::check_run_directory(
+        options.out_dir, {experiment.file, fs::path(args.log)},
+        args.force ? experiments::FinishedRun::kReplace : experiments::FinishedRun::kKeep);
   } catch (const experiments::RunDirectoryError& e) {
     std::cerr << "cogmap replay: " << e.what() << "\n";
     return kExitBadInput;
@@ -148,6 +151,7 @@ const CommandRegistrar kRegistrar{
       sub->add_option("--odom-topic", args->bag.odom_topic,
                       "ROS bag: the nav_msgs/Odometry or /tf topic (default: detected)");
       sub->add_flag("--no-figures", args->no_figures, "skip the PNG figures (faster)");
+      sub->add_flag("--force", args->force, "replace a finished run in --out");
       sub->callback([&exit_code, args] { exit_code = replay(*args); });
     }};
 

@@ -94,15 +94,11 @@ int run(const RunArgs& args) {
     out += "_rerun";
   }
   try {
-    experiments::check_run_directory(out, {experiment.file});
+    experiments::check_run_directory(
+        out, {experiment.file},
+        args.force ? experiments::FinishedRun::kReplace : experiments::FinishedRun::kKeep);
   } catch (const experiments::RunDirectoryError& e) {
     std::cerr << "cogmap run: " << e.what() << "\n";
-    return kExitBadInput;
-  }
-  if (fs::exists(out / "metrics.json") && !args.force) {
-    std::cerr << "cogmap run: " << out.string()
-              << " already holds a finished run (metrics.json); pass --force to replace it or "
-                 "choose another --out\n";
     return kExitBadInput;
   }
   experiments::RunOptions options;

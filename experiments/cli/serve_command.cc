@@ -15,6 +15,7 @@
 #include "cogmap/sim/sim_robot.h"
 #include "cogmap/sim/world_spec.h"
 #include "command_registry.h"
+#include "option_checks.h"
 
 namespace cogmap::cli {
 namespace {
@@ -136,7 +137,7 @@ const CommandRegistrar kRegistrar{
                       "wall-clock ms per 100 ms SIP cycle (< 100 runs faster than real time)")
           ->check(CLI::Range(5, 1000));
       sub->add_option("--duration", args->duration_s, "stop after this many wall seconds")
-          ->check(CLI::PositiveNumber);
+          ->check(finite_positive());
       sub->callback([&exit_code, args] { exit_code = serve(*args); });
     }};
 

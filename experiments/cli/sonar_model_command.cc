@@ -16,6 +16,7 @@
 #include "cogmap/sim/sonar_model.h"
 #include "cogmap/sim/world_spec.h"
 #include "command_registry.h"
+#include "option_checks.h"
 
 namespace cogmap::cli {
 namespace {
@@ -27,7 +28,26 @@ struct SonarModelArgs {
   std::string out;
   std::string world;
   double range_m = 2.0;
+  bool force = false;
 };
+
+// What the command writes into --out.
+const std::vector<std::string> kOutputFiles{"echo_model.csv", "echo_probability.png",
+                                            "echo_range.png"};
+
+// --out, before any work: a folder (or a new one), and none of the three files there unless
+// --force, since the folder may be the user's own (an echo_model.csv of theirs was replaced).
+void check_out_folder(const SonarModelArgs& args) {
+  std::error_code ec;
+  if (fs::exists(args.out, ec) && !fs::is_directory(args.out, ec)) {
+    throw OutputPathError(args.out + ": not a directory; choose another --out");
+  }
+  std::vector<fs::path> inputs;
+  if (!args.world.empty()) inputs.emplace_back(args.world);
+  for (const std::string& name : kOutputFiles) {
+    check_output_file(fs::path(args.out) / name, "--out", inputs, args.force);
+  }
+}
 
 struct Response {
   double probability = 0.0;  // of any echo (before dropouts)
@@ -62,6 +82,7 @@ Response response(const std::vector<sim::EchoCandidate>& candidates, double walk
 int sonar_model(const SonarModelArgs& args) {
   std::vector<sim::SonarMaterial> materials = sim::builtin_sonar_materials();
   try {
+    check_out_folder(args);
     if (!args.world.empty()) materials = sim::load_world(args.world).materials;
   } catch (const std::exception& e) {
     std::cerr << "cogmap sonar-model: " << e.what() << "\n";
@@ -137,10 +158,12 @@ const CommandRegistrar kRegistrar{
           "Figures of the simulated echo model: echo probability and median reading against "
           "incidence, per material");
       sub->add_option("--out", args->out, "output folder")->required();
+      sub->add_flag("--force", args->force,
+                    "replace echo_model.csv, echo_probability.png and echo_range.png in --out");
       sub->add_option("--world", args->world, "take the materials of this world file")
           ->check(CLI::ExistingFile);
       sub->add_option("--range", args->range_m, "where the wall crosses the axis, m (default 2)")
-          ->check(CLI::Range(0.2, 4.9));
+          ->check(finite_range(0.2, 4.9));
       sub->callback([&exit_code, args] { exit_code = sonar_model(*args); });
     }};
 

@@ -14,6 +14,7 @@
 #include "cogmap/hw/robot_log.h"
 #include "cogmap/mapper/io/asr_json.h"
 #include "command_registry.h"
+#include "option_checks.h"
 
 namespace cogmap::cli {
 namespace {
@@ -24,6 +25,7 @@ struct SonarStatsArgs {
   std::vector<std::string> recordings;
   std::string compare;
   std::string csv;
+  bool force = false;
   experiments::RecordingOptions recording;
   experiments::SonarStatsOptions stats;
 };
@@ -50,7 +52,22 @@ experiments::SonarStats pooled_stats(const std::vector<std::string>& paths,
   return collector->result();
 }
 
+// --csv, checked before any recording is read: never one of the recordings (the table once
+// went over its own log), never an existing file unless --force.
+void check_csv_path(const SonarStatsArgs& args) {
+  if (args.csv.empty()) return;
+  std::vector<fs::path> inputs(args.recordings.begin(), args.recordings.end());
+  if (!args.compare.empty()) inputs.emplace_back(args.compare);
+  check_output_file(args.csv, "--csv", inputs, args.force);
+}
+
 int sonar_stats(const SonarStatsArgs& args) {
+  try {
+    check_csv_path(args);
+  } catch (const OutputPathError& e) {
+    std::cerr << "cogmap sonar-stats: " << e.what() << "\n";
+    return kExitBadInput;
+  }
   experiments::SonarStats stats, other;
   try {
     stats = pooled_stats(args.recordings, args);
@@ -70,7 +87,7 @@ int sonar_stats(const SonarStatsArgs& args) {
     std::ostringstream csv;
     experiments::write_sonar_stats_csv(csv, stats);
     try {
-      mapper::io::write_file_atomic(args.csv, csv.str());
+      mapper::io::write_file_atomic(args.csv, csv.str());  // temp file + rename
     } catch (const std::exception& e) {
       std::cerr << "cogmap sonar-stats: " << e.what() << "\n";
       return kExitFailed;
@@ -91,7 +108,10 @@ const CommandRegistrar kRegistrar{
           ->check(CLI::ExistingFile);
       sub->add_option("--compare", args->compare, "a second recording, shown side by side")
           ->check(CLI::ExistingFile);
-      sub->add_option("--csv", args->csv, "also write the table of the first as CSV here");
+      sub->add_option("--csv", args->csv,
+                      "also write the table of the first as CSV here (a new file; never one of "
+                      "the recordings)");
+      sub->add_flag("--force", args->force, "replace an existing --csv file");
       sub->add_option("--format", args->recording.format, "recording format (default: detected)")
           ->check(CLI::IsMember({"auto", "cogmap", "carmen", "player", "rosbag"}));
       sub->add_option("--robot", args->recording.bag.robot, "robot model of a bag (e.g. p3dx)");
@@ -99,10 +119,10 @@ const CommandRegistrar kRegistrar{
       sub->add_option("--odom-topic", args->recording.bag.odom_topic, "bag odometry topic");
       sub->add_option("--min-speed", args->stats.min_speed_mps,
                       "count frames only above this speed, m/s (default 0.1)")
-          ->check(CLI::Range(0.0, 10.0));
+          ->check(finite_range(0.0, 10.0));
       sub->add_option("--max-echo", args->stats.max_echo_range_m,
                       "an echo is a reading below this range, m (default 4.9)")
-          ->check(CLI::Range(0.0, 100.0));
+          ->check(finite_range(0.0, 100.0));
       sub->callback([&exit_code, args] { exit_code = sonar_stats(*args); });
     }};
 

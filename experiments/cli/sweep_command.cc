@@ -29,6 +29,7 @@ struct SweepArgs {
   bool no_figures = false;
   bool fsync = false;
   bool no_plots = false;
+  bool force = false;  // write into an --out whose results file or plots/ no sweep wrote
   std::size_t max_runs = experiments::SweepLimits{}.max_runs;
 };
 
@@ -75,6 +76,10 @@ int merge(const SweepArgs& args) {
       tables.emplace_back(f.string(), experiments::parse_csv(read_text(f), f.string()));
     }
     const experiments::ResultsTable merged = experiments::merge_results(tables);
+    // The header line: an earlier merge of the same results wrote the same one.
+    std::string header = experiments::to_csv({merged.header, {}});
+    header.pop_back();
+    experiments::check_sweep_directory(out, {"results.csv", header, !args.no_plots}, args.force);
     mapper::io::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
     std::cout << "cogmap sweep: merged " << tables.size() << " files, " << merged.rows.size()
               << " runs into " << (out / "results.csv").string() << "\n";
@@ -109,7 +114,15 @@ int sweep(const SweepArgs& args) {
     options.progress = experiments::ProgressBar::stderr_is_terminal();
     planned = experiments::plan_sweep(spec, options);
     if (!planned.empty()) experiments::validate_experiment(planned.front().experiment);
+    // Only shard 1/1 draws the plots.
+    const experiments::SweepOutputs outputs{experiments::results_file_name(options.shard),
+                                            experiments::results_header_start(spec),
+                                            !args.no_plots && options.shard.n == 1};
+    experiments::check_sweep_directory(options.out_dir, outputs, args.force);
   } catch (const yaml::ConfigError& e) {
+    std::cerr << "cogmap sweep: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const experiments::SweepDirectoryError& e) {
     std::cerr << "cogmap sweep: " << e.what() << "\n";
     return kExitBadInput;
   }
@@ -139,6 +152,8 @@ int sweep(const SweepArgs& args) {
     });
   }
   try {
+    // Marked first: a rerun after an interruption or a failure resumes here.
+    experiments::mark_sweep_directory(options.out_dir, durability);
     const auto outcome = experiments::run_sweep(
         spec, planned, options, [no_figures, durability](const experiments::PlannedRun& p) {
           experiments::RunOptions run_options;
@@ -180,6 +195,9 @@ const CommandRegistrar kRegistrar{
       sub->add_flag("--no-plots", args->no_plots, "skip the per-metric plots");
       sub->add_flag("--fsync", args->fsync,
                     "fsync every room and result file as it is written (survives a power cut)");
+      sub->add_flag("--force", args->force,
+                    "write into an --out whose results file or plots/ no sweep wrote, "
+                    "replacing them");
       sub->add_option("--max-runs", args->max_runs,
                       "refuse sweeps with more runs than this (default 10000)")
           ->check(CLI::PositiveNumber);

@@ -3,12 +3,108 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <string_view>
+
+#include "cogmap/sim/world_spec.h"
 
 namespace cogmap::experiments {
 namespace {
 
 using yaml::ConfigError;
 using yaml::Node;
+
+int line_or(const YAML::Mark& mark, int fallback) {
+  return mark.is_null() ? fallback : mark.line + 1;
+}
+
+// The line of `key_path` ("controller.waypoints") as the file wrote it: its key's line, or for
+// a key the file does not have, the line of the block it would be in (`line` for none). Not the
+// value's own line: yaml-cpp marks an empty value ("name:" and nothing) at the next token, a
+// line further down, and a --set value carries the lines of its own text (always 1).
+int written_line(const YAML::Node& map, std::string_view key_path, int line = 0) {
+  if (!map.IsMap()) return line;
+  line = line_or(map.Mark(), line);
+  const std::size_t dot = std::min(key_path.find('.'), key_path.size());
+  for (const auto& kv : map) {
+    if (!kv.first.IsScalar() || kv.first.Scalar() != key_path.substr(0, dot)) continue;
+    if (kv.first.Mark().is_null()) return line;  // a key --set created
+    line = kv.first.Mark().line + 1;
+    return dot == key_path.size() ? line : written_line(kv.second, key_path.substr(dot + 1), line);
+  }
+  return line;
+}
+
+// The byte offset where `text` stops being UTF-8 (RFC 3629: no overlong forms, surrogates or
+// code points past U+10FFFF), or npos.
+std::size_t invalid_utf8_at(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    std::size_t n = 0;                   // continuation bytes
+    unsigned char lo = 0x80, hi = 0xBF;  // range of the first continuation byte
+    if (b < 0x80) {
+      n = 0;
+    } else if (b >= 0xC2 && b <= 0xDF) {
+      n = 1;
+    } else if (b >= 0xE0 && b <= 0xEF) {
+      n = 2;
+      if (b == 0xE0) lo = 0xA0;  // overlong
+      if (b == 0xED) hi = 0x9F;  // surrogates
+    } else if (b >= 0xF0 && b <= 0xF4) {
+      n = 3;
+      if (b == 0xF0) lo = 0x90;  // overlong
+      if (b == 0xF4) hi = 0x8F;  // past U+10FFFF
+    } else {
+      return i;
+    }
+    if (n > text.size() - i - 1) return i;
+    for (std::size_t k = 1; k <= n; ++k) {
+      const auto c = static_cast<unsigned char>(text[i + k]);
+      if (k == 1 ? (c < lo || c > hi) : (c < 0x80 || c > 0xBF)) return i;
+    }
+    i += n + 1;
+  }
+  return std::string_view::npos;
+}
+
+// A free text the run writes out (metrics.json, the sweep tables, figure titles). JSON holds
+// UTF-8 only: a name of bytes FF FE ran the whole simulation and then failed writing it, so
+// the text is checked here, where the error can still name the line.
+std::string utf8_text(const Node& node) {
+  std::string text = node.as<std::string>();
+  if (const std::size_t at = invalid_utf8_at(text); at != std::string_view::npos) {
+    std::ostringstream msg;
+    msg << "not valid UTF-8 text (byte 0x" << std::hex
+        << static_cast<int>(static_cast<unsigned char>(text[at])) << std::dec << " at offset " << at
+        << "); the run writes it into metrics.json, which holds UTF-8 only";
+    node.fail(msg.str());
+  }
+  return text;
+}
+
+// Throws at `key` of `map`, on the key's own line: for a key with nothing after it,
+// Node::line() would name the next key's.
+[[noreturn]] void fail_at_key(const Node& map, const std::string& key, const std::string& message) {
+  throw ConfigError(map.file(), written_line(map.raw(), key, map.line()),
+                    map.key_path().empty() ? key : map.key_path() + "." + key, message);
+}
+
+// The text of `key`, UTF-8 and not empty.
+std::string required_text(const Node& map, const std::string& key, const std::string& if_empty) {
+  const Node value = map[key];  // "missing required key" when absent
+  if (value.raw().IsNull()) fail_at_key(map, key, if_empty);
+  std::string text = utf8_text(value);
+  if (text.empty()) value.fail(if_empty);
+  return text;
+}
+
+// The text of an optional `key`, UTF-8; empty when absent.
+std::string optional_text(const Node& map, const std::string& key) {
+  const auto value = map.child(key);
+  if (!value) return "";
+  if (value->raw().IsNull()) fail_at_key(map, key, "expected a string (or no key at all)");
+  return utf8_text(*value);
+}
 
 /// An optional number that must lie in [lo, hi]; `fallback` when absent.
 double number_in(const Node& block, const std::string& key, double lo, double hi, double fallback) {
@@ -70,7 +166,9 @@ ControllerConfig parse_controller(const Node& block) {
     for (std::size_t i = 0; i < wps->size(); ++i) {
       const Node p = wps->at(i);
       if (!p.is_sequence() || p.size() != 2) p.fail("a waypoint is [x_m, y_m]");
-      c.waypoints.emplace_back(p.at(0).as<double>(), p.at(1).as<double>());
+      // The world's bound: a waypoint at 1e155 m overflowed the distance to it and counted as
+      // reached at once.
+      c.waypoints.emplace_back(sim::parse_coordinate(p.at(0)), sim::parse_coordinate(p.at(1)));
     }
   }
   if (const auto pose = block.child("pose")) {
@@ -112,19 +210,66 @@ ControllerConfig parse_controller(const Node& block) {
   return c;
 }
 
-// Re-raises an error caused by a --set override so it also says which override did it: the
-// overridden node has no line of its own, so the file line alone would point at its parent.
-[[noreturn]] void rethrow_with_override(const ConfigError& e,
-                                        const std::vector<std::string>& overrides) {
-  const std::string message = bare_message(e);
-  for (const std::string& o : overrides) {
-    const std::string key = o.substr(0, o.find('='));
-    if (!e.key().empty() &&
-        (e.key() == key || e.key().starts_with(key + ".") || e.key().starts_with(key + "["))) {
-      throw ConfigError(e.file(), e.line(), e.key(), message + " (from --set " + o + ")");
+// `inner` is `outer` or a node inside it ("a.b" and "a.b[0]" are inside "a").
+bool within(const std::string& inner, const std::string& outer) {
+  return !outer.empty() &&
+         (inner == outer || inner.starts_with(outer + ".") || inner.starts_with(outer + "["));
+}
+
+// An override as the user typed it, on one line and printable: a value may hold newlines,
+// control characters or bytes that are not UTF-8, which a terminal would garble.
+std::string shown(const std::string& override_text) {
+  const bool utf8 = invalid_utf8_at(override_text) == std::string_view::npos;
+  std::string out;
+  for (const char ch : override_text) {
+    const auto b = static_cast<unsigned char>(ch);
+    if (ch == '\n') {
+      out += "\\n";
+    } else if (b < 0x20 || b == 0x7F || (b >= 0x80 && !utf8)) {
+      constexpr char kHex[] = "0123456789abcdef";
+      out += {'\\', 'x', kHex[b >> 4], kHex[b & 0xF]};
+    } else {
+      out += ch;
     }
   }
-  throw e;
+  return "(from --set " + out + ")";
+}
+
+// The override an error at `key` comes from, and whether the error lies in the value it wrote
+// (the node itself or something in it) rather than at a parent it created or changed
+// (`--set a.b=1` makes the unknown key `a`; `--set mapper.grid.x=1` turns `grid` into a
+// mapping). Null when no override did it.
+struct Cause {
+  const std::string* override_text = nullptr;
+  bool in_value = false;
+};
+
+Cause override_of(const std::string& key, const std::vector<std::string>& overrides) {
+  if (key.empty()) return {};
+  for (const std::string& o : overrides) {
+    if (within(key, o.substr(0, o.find('=')))) return {&o, true};
+  }
+  for (const std::string& o : overrides) {
+    if (within(o.substr(0, o.find('=')), key)) return {&o, false};
+  }
+  return {};
+}
+
+// Re-raises an error caused by a --set override so it also says which override did it, at the
+// line of the key it overrides. The value's own nodes carry lines of the value's text (always
+// 1), and the parents it created none: those would point at the wrong line of the file.
+[[noreturn]] void rethrow_with_override(const ConfigError& e, const YAML::Node& root,
+                                        const std::vector<std::string>& overrides) {
+  const Cause cause = override_of(e.key(), overrides);
+  if (!cause.override_text) throw e;
+  const std::string& o = *cause.override_text;
+  int line = e.line();
+  if (cause.in_value) {
+    line = written_line(root, o.substr(0, o.find('=')));
+  } else if (line == 0) {
+    line = written_line(root, e.key());
+  }
+  throw ConfigError(e.file(), line, e.key(), bare_message(e) + " " + shown(o));
 }
 
 }  // namespace
@@ -190,6 +335,9 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "em_reference_bin_deg",
                      "em_drift_per_rad",
                      "em_smear_variance",
+                     "em_label_sources",
+                     "em_clutter_weight",
+                     "em_weight_by_length",
                      "em_min_direction_sigma_deg",
                      "translation",
                      "translation_max_offset_m",
@@ -288,6 +436,13 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.localizer.drift.per_rad_turned =
       number_in(block, "em_drift_per_rad", 0.0, 1.0, o.localizer.drift.per_rad_turned);
   o.localizer.smear_variance = block.get_or<bool>("em_smear_variance", o.localizer.smear_variance);
+  // The three departures of our EM from Fig. A.6's mixture, each selectable so that the thesis's
+  // own EM can be run (docs/algorithms.md, "The thesis's EM, exactly").
+  o.localizer.label_sources = block.get_or<bool>("em_label_sources", o.localizer.label_sources);
+  o.localizer.clutter_weight =
+      number_in(block, "em_clutter_weight", 0.0, 0.9, o.localizer.clutter_weight);
+  o.localizer.weight_by_length =
+      block.get_or<bool>("em_weight_by_length", o.localizer.weight_by_length);
   o.localizer.min_direction_sigma_rad =
       number_in(block, "em_min_direction_sigma_deg", 0.0, 45.0,
                 o.localizer.min_direction_sigma_rad * 180.0 / std::numbers::pi) *
@@ -369,12 +524,11 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
                     "controller", "mapper", "output"});
   Experiment e;
   e.file = file;
-  e.name = root.get<std::string>("name");
-  if (e.name.empty()) root["name"].fail("must not be empty");
-  if (const auto d = root.child("description")) (void)d->as<std::string>();
-  const std::string world = root.get<std::string>("world");
+  e.name = required_text(root, "name", "must not be empty");
+  (void)optional_text(root, "description");
+  const std::string world =
+      required_text(root, "world", "must not be empty (a world file, or 'none')");
   e.world_line = root["world"].line();
-  if (world.empty()) root["world"].fail("must not be empty (a world file, or 'none')");
   const std::filesystem::path world_path(world);
   e.world = world_path.is_absolute() ? world_path : file.parent_path() / world_path;
   e.world = e.world.lexically_normal();
@@ -389,8 +543,9 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
 
   if (const auto start = root.child("start")) {
     start->expect_keys({"x_m", "y_m", "theta_deg"});
+    // The bound a world's own start has: beyond it the physics is single-precision noise.
     e.start = mapper::Pose2{
-        start->get<double>("x_m"), start->get<double>("y_m"),
+        sim::parse_coordinate((*start)["x_m"]), sim::parse_coordinate((*start)["y_m"]),
         mapper::wrap_angle_rad(start->get_or<double>("theta_deg", 0.0) * std::numbers::pi / 180.0)};
   }
   if (const auto robot = root.child("robot")) {
@@ -429,12 +584,24 @@ Experiment parse_with_overrides(Node root, const std::filesystem::path& file,
                                 const std::vector<std::string>& overrides,
                                 std::optional<std::uint64_t> seed_override) {
   root.expect_map();
-  for (const std::string& o : overrides) yaml::apply_override(root.raw(), o);
+  for (const std::string& o : overrides) {
+    try {
+      yaml::apply_override(root.raw(), o);
+    } catch (const ConfigError& e) {
+      // apply_override knows only the override ("--set", no line): name the file and the line
+      // of the key it could not set, as for every other error an override causes (none for an
+      // override that is no key=value at all).
+      const std::size_t eq = o.find('=');
+      const bool has_key = eq != std::string::npos && eq > 0;
+      throw ConfigError(root.file(), has_key ? written_line(root.raw(), e.key()) : 0, e.key(),
+                        bare_message(e) + " " + shown(o));
+    }
+  }
   if (seed_override) root.raw()["seed"] = *seed_override;
   try {
     return parse_experiment(root, file);
   } catch (const ConfigError& e) {
-    rethrow_with_override(e, overrides);
+    rethrow_with_override(e, root.raw(), overrides);
   }
 }
 

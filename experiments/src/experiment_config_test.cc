@@ -113,6 +113,19 @@ TEST(ExperimentConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NE(error_of(p, {"mapper.em_reference_rooms=2.5"}).find("expected an integer"),
             std::string::npos);
   EXPECT_NE(error_of(p, {"mapper.glimpse_distance_m=0.1"}), "no error");
+  // The thesis's own mixture (docs/algorithms.md, "The thesis's EM, exactly"): unlabelled
+  // sources, no clutter component, every direction weighing the same.
+  EXPECT_TRUE(defaults.mapper.localizer.label_sources);
+  EXPECT_DOUBLE_EQ(defaults.mapper.localizer.clutter_weight, 0.1);
+  EXPECT_TRUE(defaults.mapper.localizer.weight_by_length);
+  const Experiment thesis =
+      load_experiment(p, {"mapper.em_label_sources=false", "mapper.em_clutter_weight=0",
+                          "mapper.em_weight_by_length=false"});
+  EXPECT_FALSE(thesis.mapper.localizer.label_sources);
+  EXPECT_DOUBLE_EQ(thesis.mapper.localizer.clutter_weight, 0.0);
+  EXPECT_FALSE(thesis.mapper.localizer.weight_by_length);
+  EXPECT_NE(error_of(p, {"mapper.em_clutter_weight=1"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.em_clutter_weight=nan"}), "no error");
   // Scan matching: off; 1 m or half a radian, 100 echoes, 3 000 readings of memory unless set.
   EXPECT_FALSE(defaults.mapper.scan_match.enabled);
   EXPECT_EQ(defaults.mapper.scan_match.min_window_echoes, 100u);
@@ -361,6 +374,123 @@ TEST(ExperimentConfig, RecordsRealRobotSources) {
   EXPECT_EQ(load_experiment(p).robot_source, RobotSource::kP2os);
   const fs::path bad = write_temp("src.yaml", "name: r\nworld: w.yaml\nrobot: {source: wifi}\n");
   EXPECT_NE(error_of(bad).find("robot.source: unknown robot source 'wifi'"), std::string::npos);
+}
+
+// Waypoints and the start share the world's coordinate bound (sim::kMaxCoordinateM): a
+// waypoint at 1e155 m overflowed the distance to it and counted as reached at once, and a
+// start at 1e9 m ran although a world file refuses it.
+TEST(ExperimentConfig, WaypointsAndStartKeepTheWorldsCoordinateBound) {
+  const fs::path far = write_temp("far_wp.yaml",
+                                  "name: r\nworld: w.yaml\ncontroller:\n  type: route\n"
+                                  "  waypoints: [[1, 2],\n              [1e155, 3]]\n");
+  EXPECT_EQ(error_of(far), far.string() +
+                               ":6: controller.waypoints[1][0]: coordinate 1e+155 m is beyond "
+                               "the +/-1000 m the simulator supports (single-precision physics)");
+  const fs::path p = write_temp("good_wp.yaml", kGood);
+  // From --set the value has no line: the error takes the overridden key's (line 11).
+  const std::string set = error_of(p, {"controller.waypoints=[[2, -1000.5]]"});
+  EXPECT_EQ(set.rfind(p.string() + ":11: controller.waypoints[0][1]: coordinate -1000.5 m", 0), 0u)
+      << set;
+  EXPECT_NE(set.find("(from --set controller.waypoints=[[2, -1000.5]])"), std::string::npos) << set;
+  const Experiment edge = load_experiment(p, {"controller.waypoints=[[1000, -1000]]"});
+  EXPECT_EQ(edge.controller.waypoints[0].x(), 1000.0);
+  EXPECT_EQ(edge.controller.waypoints[0].y(), -1000.0);
+
+  const fs::path start =
+      write_temp("far_start.yaml", "name: r\nworld: w.yaml\nstart:\n  x_m: 1e9\n  y_m: 0\n");
+  EXPECT_EQ(error_of(start).rfind(start.string() + ":4: start.x_m: coordinate 1e+09 m is beyond "
+                                                   "the +/-1000 m",
+                                  0),
+            0u)
+      << error_of(start);
+  const fs::path ok = write_temp("start.yaml", "name: r\nworld: w.yaml\nstart: {x_m: 1, y_m: 2}\n");
+  EXPECT_NE(error_of(ok, {"start.y_m=-2e3"}).find(":3: start.y_m: coordinate -2000 m is beyond"),
+            std::string::npos)
+      << error_of(ok, {"start.y_m=-2e3"});
+  EXPECT_DOUBLE_EQ(load_experiment(ok).start->y_m, 2.0);
+}
+
+// Names and descriptions reach metrics.json, which holds UTF-8 only: a name of bytes FF FE ran
+// the whole simulation and then failed writing it. Refused at parse time, with the line.
+TEST(ExperimentConfig, NamesAndDescriptionsMustBeUtf8) {
+  const fs::path bad = write_temp("bad_name.yaml", "name: \"\xff\xfe\"\nworld: w.yaml\n");
+  EXPECT_EQ(error_of(bad), bad.string() +
+                               ":1: name: not valid UTF-8 text (byte 0xff at offset 0); the run "
+                               "writes it into metrics.json, which holds UTF-8 only");
+  const fs::path desc =
+      write_temp("bad_desc.yaml", "name: r\ndescription: caf\xc3 au lait\nworld: w.yaml\n");
+  EXPECT_NE(error_of(desc).find(":2: description: not valid UTF-8 text (byte 0xc3 at offset 3)"),
+            std::string::npos)
+      << error_of(desc);
+  const fs::path good = write_temp("utf8.yaml",
+                                   "name: \"r\xc3\xa4ume \xe2\x9c\x93 \xf0\x9d\x84\x9e\"\n"
+                                   "description: \"\xc3\xa9t\xc3\xa9\"\nworld: w.yaml\n");
+  EXPECT_EQ(load_experiment(good).name, "r\xc3\xa4ume \xe2\x9c\x93 \xf0\x9d\x84\x9e");
+  // Overlong "/", a UTF-16 surrogate, past U+10FFFF, a cut sequence; from --set too.
+  for (const char* name : {"\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "ok\xe2\x9c"}) {
+    const std::string e = error_of(good, {std::string("name=") + name});
+    EXPECT_NE(e.find("name: not valid UTF-8 text"), std::string::npos) << e;
+    EXPECT_NE(e.find("(from --set name="), std::string::npos) << e;
+  }
+  const std::string world = error_of(good, {"world=w\xff.yaml"});
+  EXPECT_NE(world.find("world: not valid UTF-8 text (byte 0xff at offset 1)"), std::string::npos)
+      << world;
+  EXPECT_NE(world.find("(from --set world=w\\xff.yaml)"), std::string::npos) << world;
+}
+
+// YAML::Load keeps a text's first document: `--set 'duration_s=3\n---\nx: 1'` set 3 and dropped
+// the rest. A value is one document, like a file.
+TEST(ExperimentConfig, OverrideWithASecondDocumentIsRefused) {
+  const fs::path p = write_temp("two_docs.yaml", kGood);
+  const std::string e = error_of(p, {"duration_s=3\n---\nx: 1"});
+  EXPECT_EQ(e, p.string() +
+                   ":4: duration_s: value holds a second YAML document (or text after the end "
+                   "of the first) at its line 2: a --set value is exactly one YAML value (from "
+                   "--set duration_s=3\\n---\\nx: 1)");
+}
+
+// An empty value is reported on its key's line: yaml-cpp marks it at the next key.
+TEST(ExperimentConfig, EmptyValuesAreReportedOnTheirOwnLine) {
+  const fs::path name = write_temp("no_name.yaml", "name:\nworld: w.yaml\nseed: 3\n");
+  EXPECT_EQ(error_of(name), name.string() + ":1: name: must not be empty");
+  const fs::path world = write_temp("no_world.yaml", "name: r\nworld:\n");
+  EXPECT_EQ(error_of(world),
+            world.string() + ":2: world: must not be empty (a world file, or 'none')");
+  const fs::path null_world = write_temp("null_world.yaml", "name: r\nworld: ~\nseed: 3\n");
+  EXPECT_EQ(error_of(null_world),
+            null_world.string() + ":2: world: must not be empty (a world file, or 'none')");
+  const fs::path desc = write_temp("no_desc.yaml", "name: r\ndescription:\nworld: w.yaml\n");
+  EXPECT_EQ(error_of(desc),
+            desc.string() + ":2: description: expected a string (or no key at all)");
+  const fs::path quoted = write_temp("quoted.yaml", "name: \"\"\nworld: w.yaml\n");
+  EXPECT_EQ(error_of(quoted), quoted.string() + ":1: name: must not be empty");
+}
+
+// An override that creates or changes a parent of the node an error is at still says so, with
+// the line of the closest node the file wrote.
+TEST(ExperimentConfig, OverrideErrorsAboveTheOverriddenKeyNameTheOverride) {
+  const fs::path p = write_temp("parents.yaml", kGood);
+  const std::string unknown = error_of(p, {"a.b=1"});
+  EXPECT_EQ(unknown.rfind(p.string() + ":1: a: unknown key (allowed: name,", 0), 0u) << unknown;
+  EXPECT_NE(unknown.find("(from --set a.b=1)"), std::string::npos) << unknown;
+  // `grid: bayes` (line 13) is no mapping to set a key in.
+  EXPECT_EQ(
+      error_of(p, {"mapper.grid.x=1"}),
+      p.string() + ":13: mapper.grid.x: 'grid' is not a mapping (from --set mapper.grid.x=1)");
+  // Without a `grid` key the override makes one, a mapping: the line is its block's.
+  const fs::path no_grid =
+      write_temp("no_grid.yaml", "name: m\nworld: w.yaml\nmapper:\n  cell_scale_mm: 100\n");
+  EXPECT_EQ(error_of(no_grid, {"mapper.grid.x=1"}),
+            no_grid.string() + ":4: mapper.grid: expected a string (from --set mapper.grid.x=1)");
+  // An error inside the override's own value is still the override's.
+  EXPECT_NE(error_of(p, {"mapper.cell_scale_mm=big"})
+                .find(":14: mapper.cell_scale_mm: expected a finite number, got 'big' (from "
+                      "--set mapper.cell_scale_mm=big)"),
+            std::string::npos)
+      << error_of(p, {"mapper.cell_scale_mm=big"});
+  // A malformed override names no line: nothing in the file is wrong.
+  EXPECT_EQ(error_of(p, {"nonsense"}),
+            p.string() + ": nonsense: expected key=value (from --set nonsense)");
 }
 
 TEST(ExperimentConfig, MissingFileIsAConfigError) {

@@ -28,17 +28,69 @@ bool is_grid_file_name(const std::string& name) {
   return std::regex_match(name, kGrid);
 }
 
-// What a run writes at the top of its directory: a directory holding only these was made by a
-// run before the marker existed, and may be reused.
-bool is_run_product(const fs::directory_entry& entry) {
-  const std::string name = entry.path().filename().string();
+bool is_asr_file_name(const std::string& name) {
+  static const std::regex kAsr(R"(\d{3,}\.json)");
+  return std::regex_match(name, kAsr);
+}
+
+// The figures a run writes (runner.cc): the rooms' stages, the map, its error, the graph.
+bool is_figure_file_name(const std::string& name) {
+  static const std::regex kFigure(R"((room_\d{3,}_stages|map_before_after|map_error|graph)\.png)");
+  return std::regex_match(name, kFigure);
+}
+
+// The first entry of `dir` that `is_product` does not accept (a symbolic link never is one: a
+// run writes none, and clearing through one would reach another folder), or "" if none.
+template <typename Accept>
+std::string first_foreign_entry(const fs::path& dir, Accept is_product) {
   std::error_code ec;
-  if (entry.is_directory(ec)) return name == "asrs" || name == "figures";
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_symlink(ec) || !is_product(entry, name)) return name;
+  }
+  if (ec) throw RunDirectoryError(dir.string() + ": cannot list: " + ec.message());
+  return "";
+}
+
+// What a run writes: a directory holding only these (and its own experiment.yaml or
+// metrics.json) was made by a run before the marker existed, and may be reused.
+bool is_run_product(const fs::directory_entry& entry, const std::string& name) {
+  std::error_code ec;
+  const bool temp = mapper::io::is_temp_file_name(name);
+  if (entry.is_directory(ec)) {
+    if (name == "asrs") {
+      return first_foreign_entry(entry.path(),
+                                 [](const auto&, const std::string& n) {
+                                   return is_asr_file_name(n) || mapper::io::is_temp_file_name(n);
+                                 })
+          .empty();
+    }
+    if (name == "figures") {
+      return first_foreign_entry(entry.path(),
+                                 [](const auto&, const std::string& n) {
+                                   return is_figure_file_name(n) ||
+                                          mapper::io::is_temp_file_name(n);
+                                 })
+          .empty();
+    }
+    return false;
+  }
   for (const char* known : kRunProductFiles) {
     if (name == known) return true;
   }
-  return name == kRunMarkerName || name == kRunLockName || is_grid_file_name(name) ||
-         mapper::io::is_temp_file_name(name);
+  return name == kRunMarkerName || name == kRunLockName || is_grid_file_name(name) || temp;
+}
+
+// A run writes into DIR/asrs and DIR/figures and clears them: neither may lead elsewhere.
+void refuse_linked_subdirectories(const fs::path& dir) {
+  std::error_code ec;
+  for (const char* sub : {"asrs", "figures"}) {
+    if (fs::is_symlink(dir / sub, ec)) {
+      throw RunDirectoryError((dir / sub).string() +
+                              ": is a symbolic link; a run writes and clears this folder, so it "
+                              "must be the run directory's own; choose another --out");
+    }
+  }
 }
 
 bool same_directory(const fs::path& a, const fs::path& b) {
@@ -52,16 +104,20 @@ bool same_directory(const fs::path& a, const fs::path& b) {
 void clear_run_outputs(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return;
-  static const std::regex kAsr(R"(\d{3,}\.json)");
   for (const char* name : kRunProductFiles) fs::remove(dir / name, ec);
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     if (is_grid_file_name(e.path().filename().string())) fs::remove(e.path(), ec);
   }
-  for (const auto& e : fs::directory_iterator(dir / "asrs", ec)) {
-    if (std::regex_match(e.path().filename().string(), kAsr)) fs::remove(e.path(), ec);
+  // Never through a link: what lies behind it is not this run's.
+  if (!fs::is_symlink(dir / "asrs", ec)) {
+    for (const auto& e : fs::directory_iterator(dir / "asrs", ec)) {
+      if (is_asr_file_name(e.path().filename().string())) fs::remove(e.path(), ec);
+    }
   }
-  for (const auto& e : fs::directory_iterator(dir / "figures", ec)) {
-    if (e.path().extension() == ".png") fs::remove(e.path(), ec);
+  if (!fs::is_symlink(dir / "figures", ec)) {
+    for (const auto& e : fs::directory_iterator(dir / "figures", ec)) {
+      if (is_figure_file_name(e.path().filename().string())) fs::remove(e.path(), ec);
+    }
   }
 }
 
@@ -76,7 +132,8 @@ std::string safe_path_component(std::string_view name) {
   return out;
 }
 
-void check_run_directory(const fs::path& dir, const std::vector<fs::path>& inputs) {
+void check_run_directory(const fs::path& dir, const std::vector<fs::path>& inputs,
+                         FinishedRun finished) {
   std::error_code ec;
   const fs::file_status status = fs::status(dir, ec);
   if (!fs::exists(status)) return;
@@ -90,15 +147,31 @@ void check_run_directory(const fs::path& dir, const std::vector<fs::path>& input
                               ", which a run would overwrite; choose another --out");
     }
   }
-  if (fs::exists(dir / kRunMarkerName, ec)) return;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    if (!is_run_product(entry)) {
-      throw RunDirectoryError(dir.string() + ": holds " + entry.path().filename().string() +
-                              ", which no cogmap run wrote; a run directory must be new, empty "
-                              "or an earlier run's; choose another --out");
-    }
+  refuse_linked_subdirectories(dir);
+  if (finished == FinishedRun::kKeep && fs::exists(dir / "metrics.json", ec)) {
+    throw RunDirectoryError(dir.string() +
+                            " already holds a finished run (metrics.json); pass --force to "
+                            "replace it or choose another --out");
   }
-  if (ec) throw RunDirectoryError(dir.string() + ": cannot list: " + ec.message());
+  if (fs::exists(dir / kRunMarkerName, ec)) return;
+  const std::string foreign = first_foreign_entry(dir, is_run_product);
+  if (!foreign.empty()) {
+    throw RunDirectoryError(dir.string() + ": holds " + foreign +
+                            ", which no cogmap run wrote; a run directory must be new, empty "
+                            "or an earlier run's; choose another --out");
+  }
+  // Without the marker, only a run's own record makes the rest a run's (a lone grid_012.pgm
+  // or figures/graph.png may be anybody's). The lock file alone is this run's own, taken
+  // before the caller checked again.
+  const std::string beyond_lock = first_foreign_entry(
+      dir, [](const auto&, const std::string& name) { return name == kRunLockName; });
+  if (!beyond_lock.empty() && !fs::exists(dir / "experiment.yaml", ec) &&
+      !fs::exists(dir / "metrics.json", ec)) {
+    throw RunDirectoryError(dir.string() +
+                            ": is not empty and holds neither the run marker nor an "
+                            "experiment.yaml or metrics.json, so it is not an earlier run's; "
+                            "choose another --out");
+  }
 }
 
 RunDirectoryLock::RunDirectoryLock(const fs::path& dir) {
@@ -144,11 +217,12 @@ std::string run_experiment_yaml(const Experiment& experiment, const fs::path& di
 void prepare_run_directory(const fs::path& dir, const Experiment& experiment,
                            mapper::io::Durability durability) {
   std::vector<fs::path> inputs{experiment.file};
-  check_run_directory(dir, inputs);
+  check_run_directory(dir, inputs, FinishedRun::kReplace);  // the caller decided on a finished run
   mapper::io::write_file_atomic(dir / kRunMarkerName,
                                 "cogmap run directory (docs/reliability.md)\n", durability);
   for (const fs::path& d : {dir, dir / "asrs", dir / "figures"}) {
-    mapper::io::remove_stale_temp_files(d);
+    std::error_code ec;
+    if (!fs::is_symlink(d, ec)) mapper::io::remove_stale_temp_files(d);
   }
   clear_run_outputs(dir);
   mapper::io::write_file_atomic(dir / "experiment.yaml", run_experiment_yaml(experiment, dir),

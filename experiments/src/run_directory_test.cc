@@ -26,9 +26,10 @@ void write(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }
 
-std::string error_of(const fs::path& dir, const std::vector<fs::path>& inputs) {
+std::string error_of(const fs::path& dir, const std::vector<fs::path>& inputs,
+                     FinishedRun finished = FinishedRun::kKeep) {
   try {
-    check_run_directory(dir, inputs);
+    check_run_directory(dir, inputs, finished);
   } catch (const RunDirectoryError& e) {
     return e.what();
   }
@@ -56,7 +57,7 @@ TEST(RunDirectory, NewEmptyAndEarlierRunDirectoriesAreAccepted) {
                         "experiment.yaml", "asrs/000.json", "figures/graph.png"}) {
     write(old / f, "x");
   }
-  EXPECT_EQ(error_of(old, {}), "");
+  EXPECT_EQ(error_of(old, {}, FinishedRun::kReplace), "");
   // With the marker anything goes (later cogmap versions may add outputs).
   write(base / "marked" / kRunMarkerName, "");
   write(base / "marked" / "future_output.bin", "");
@@ -78,6 +79,60 @@ TEST(RunDirectory, ForeignFilesAndInputFoldersAreRefused) {
   write(run / "file_not_dir", "");
   EXPECT_NE(error_of(run / "file_not_dir", {}).find("exists and is not a directory"),
             std::string::npos);
+}
+
+TEST(RunDirectory, LinkedRunFoldersAreRefusedAndNeverClearedThrough) {
+  // A user's photos behind DIR/figures, their JSON behind DIR/asrs: a run would write into
+  // them and clear them, marker or not.
+  const fs::path base = fresh_dir("linked");
+  write(base / "photos" / "graph.png", "mine");
+  write(base / "ujson" / "001.json", "mine");
+  for (const bool marked : {false, true}) {
+    const fs::path d = base / (marked ? "marked" : "plain");
+    fs::create_directories(d);
+    if (marked) write(d / kRunMarkerName, "");
+    write(d / "experiment.yaml", "name: x\n");
+    fs::create_directory_symlink(base / "photos", d / "figures");
+    EXPECT_NE(error_of(d, {}).find("figures: is a symbolic link"), std::string::npos) << d;
+    fs::remove(d / "figures");
+    fs::create_directory_symlink(base / "ujson", d / "asrs");
+    EXPECT_NE(error_of(d, {}).find("asrs: is a symbolic link"), std::string::npos) << d;
+    clear_run_outputs(d);
+    fs::remove(d / "asrs");
+  }
+  EXPECT_TRUE(fs::exists(base / "photos" / "graph.png"));
+  EXPECT_TRUE(fs::exists(base / "ujson" / "001.json"));
+  // A link among the top-level files is no run product either.
+  const fs::path top = base / "top";
+  write(top / "experiment.yaml", "name: x\n");
+  fs::create_symlink(base / "ujson" / "001.json", top / "metrics.json");
+  EXPECT_NE(error_of(top, {}, FinishedRun::kReplace).find("holds metrics.json"), std::string::npos);
+}
+
+TEST(RunDirectory, RunLikeNamesWithoutARunsRecordAreRefused) {
+  // Without the marker, files named as a run's are a run's only beside its experiment.yaml or
+  // metrics.json, and figures/ and asrs/ must hold only what a run draws and stores.
+  const fs::path base = fresh_dir("lookalike");
+  write(base / "grids" / "grid_123.pgm", "mine");
+  EXPECT_NE(error_of(base / "grids", {}).find("is not an earlier run's"), std::string::npos);
+  // The lock file alone is a run's own (the runner checks again after taking it).
+  write(base / "locked" / kRunLockName, "");
+  EXPECT_EQ(error_of(base / "locked", {}), "");
+  write(base / "photos" / "experiment.yaml", "name: x\n");
+  write(base / "photos" / "figures" / "IMG_0001.png", "mine");
+  EXPECT_NE(error_of(base / "photos", {}).find("holds figures"), std::string::npos);
+  write(base / "store" / "experiment.yaml", "name: x\n");
+  write(base / "store" / "asrs" / "notes.json", "mine");
+  EXPECT_NE(error_of(base / "store", {}).find("holds asrs"), std::string::npos);
+}
+
+TEST(RunDirectory, AFinishedRunIsReplacedOnlyWhenAskedTo) {
+  const fs::path d = fresh_dir("finished");
+  write(d / kRunMarkerName, "");
+  write(d / "metrics.json", "{}");
+  EXPECT_NE(error_of(d, {}).find("already holds a finished run (metrics.json); pass --force"),
+            std::string::npos);
+  EXPECT_EQ(error_of(d, {}, FinishedRun::kReplace), "");
 }
 
 TEST(RunDirectory, LockKeepsASecondWriterOut) {
@@ -125,8 +180,9 @@ TEST(RunDirectory, ClearRemovesEveryRunProductAndNothingElse) {
     write(d / f, "old");
   }
   // Names a run never writes: a user's own files stay.
-  for (const char* f : {"grid_01.pgm", "grid_000.png", "notes.csv", "metrics.json.bak",
-                        "asrs/readme.txt", "asrs/07.json", "figures/plot.svg"}) {
+  for (const char* f :
+       {"grid_01.pgm", "grid_000.png", "notes.csv", "metrics.json.bak", "asrs/readme.txt",
+        "asrs/07.json", "figures/plot.svg", "figures/IMG_0001.png"}) {
     write(d / f, "mine");
   }
   clear_run_outputs(d);
@@ -135,9 +191,9 @@ TEST(RunDirectory, ClearRemovesEveryRunProductAndNothingElse) {
     if (entry.is_regular_file()) left.push_back(fs::relative(entry.path(), d).string());
   }
   std::sort(left.begin(), left.end());
-  EXPECT_EQ(left, (std::vector<std::string>{"asrs/07.json", "asrs/readme.txt", "figures/plot.svg",
-                                            "grid_000.png", "grid_01.pgm", "metrics.json.bak",
-                                            "notes.csv"}));
+  EXPECT_EQ(left, (std::vector<std::string>{
+                      "asrs/07.json", "asrs/readme.txt", "figures/IMG_0001.png", "figures/plot.svg",
+                      "grid_000.png", "grid_01.pgm", "metrics.json.bak", "notes.csv"}));
 }
 
 TEST(RunDirectory, SavedExperimentRebasesARelativeWorld) {

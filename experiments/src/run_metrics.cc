@@ -237,7 +237,9 @@ std::string metrics_json_text(const RunMetrics& m) {
   Json room_wall_ms = Json::array();
   for (const double s : m.room_wall_s) room_wall_ms.push_back(s * 1000.0);
   j["timing"]["room_wall_ms"] = room_wall_ms;
-  return j.dump(2) + "\n";
+  // Names are checked for UTF-8 when the experiment is parsed; should a string still carry a
+  // stray byte, it becomes U+FFFD rather than a type_error that loses a finished run's metrics.
+  return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 std::optional<RunMetrics::Relaxation> relaxation_metrics(const mapper::MapperOptions& options,

@@ -105,6 +105,15 @@ TEST(RunOutputs, SvgFlipsYAndHasAScaleBar) {
   EXPECT_NE(svg.find(">1 m</text>"), std::string::npos);
 }
 
+// A stray non-UTF-8 byte in a name (load_experiment refuses them; code that sets a name itself
+// might not) must not throw after a whole run: it becomes U+FFFD.
+TEST(RunMetrics, JsonOfANameThatIsNotUtf8IsWritten) {
+  RunMetrics m;
+  m.name = "a\xff\xfe";
+  const std::string text = metrics_json_text(m);
+  EXPECT_NE(text.find("\"name\": \"a\xef\xbf\xbd\xef\xbf\xbd\""), std::string::npos) << text;
+}
+
 TEST(RunMetrics, JsonHasTheRequiredKeysAndOmitsTruthMetricsWithoutTruth) {
   RunMetrics m;
   m.asr_count = 2;

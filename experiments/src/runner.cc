@@ -136,7 +136,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   // Held to the end of the session: no second writer (thread or process) enters `out`.
   std::optional<RunDirectoryLock> lock;
   try {
-    check_run_directory(out, {experiment.file});  // before the lock file is created in it
+    // Before the lock file is created in it. Whether a finished run may be replaced is the
+    // command's decision (`--force`), taken before it called here.
+    check_run_directory(out, {experiment.file}, FinishedRun::kReplace);
     lock.emplace(out);
     prepare_run_directory(out, experiment, options.durability);
   } catch (const RunDirectoryError&) {

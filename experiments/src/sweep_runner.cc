@@ -23,7 +23,82 @@ std::string read_text(const fs::path& path) {
   return s.str();
 }
 
+// The first line of `path`, at most `limit` bytes of it: enough for any header, and a file
+// that is not a results file (a binary, one huge line) is not read whole.
+std::string first_line(const fs::path& path, std::size_t limit = 1 << 16) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  char c = 0;
+  while (line.size() < limit && in.get(c) && c != '\n') line += c;
+  return line;
+}
+
+// Whether the existing results file starts with the header this sweep writes.
+bool has_header(const fs::path& results, const std::string& header) {
+  if (header.empty()) return false;
+  const std::string line = first_line(results, header.size() + 1);
+  return line == header || line == header + ",";
+}
+
+// A non-empty plots/ (or a file of that name) is something a sweep would write over.
+bool holds_plots(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path plots = dir / "plots";
+  if (!fs::exists(fs::symlink_status(plots, ec))) return false;
+  return !fs::is_directory(plots, ec) || !fs::is_empty(plots, ec);
+}
+
 }  // namespace
+
+std::string results_header_start(const SweepSpec& spec) {
+  std::vector<std::string> keys;
+  for (const SweepAxis& a : spec.vary) keys.push_back(a.key);
+  std::string header = to_csv(build_results_table({}, keys, {}));
+  if (!header.empty() && header.back() == '\n') header.pop_back();
+  return header;
+}
+
+void check_sweep_directory(const fs::path& dir, const SweepOutputs& outputs, bool force) {
+  std::error_code ec;
+  // `dir`, or the nearest of its ancestors that exists (the rest is created), must be a folder.
+  fs::path up = fs::absolute(dir, ec);
+  while (!fs::exists(up, ec) && up.has_relative_path()) up = up.parent_path();
+  if (fs::exists(up, ec) && !fs::is_directory(up, ec)) {
+    throw SweepDirectoryError(dir.string() + ": " + up.string() +
+                              " is not a directory; choose another --out");
+  }
+  const fs::path results = dir / outputs.results_file;
+  const fs::file_status status = fs::status(results, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    throw SweepDirectoryError(results.string() +
+                              ": not a regular file (a directory, device or pipe); choose "
+                              "another --out");
+  }
+  if (force || fs::exists(dir / kSweepMarkerName, ec)) return;
+  std::vector<std::string> foreign;
+  if (fs::exists(fs::symlink_status(results, ec))) {
+    // A results file of this very sweep from before the marker: resuming it must still work.
+    if (has_header(results, outputs.header)) return;
+    foreign.push_back(outputs.results_file);
+  }
+  if (outputs.plots && holds_plots(dir)) foreign.push_back("plots/");
+  if (foreign.empty()) return;
+  std::string list = foreign.front();
+  if (foreign.size() > 1) list += " and " + foreign.back();
+  const std::string shown = dir == "." ? ". (the current directory)" : dir.string();
+  throw SweepDirectoryError(
+      shown + ": holds " + list + ", which no cogmap sweep wrote (no " + kSweepMarkerName +
+      " marker, and not this sweep's header); choose another --out, or pass --force to "
+      "replace them");
+}
+
+void mark_sweep_directory(const fs::path& dir, mapper::io::Durability durability) {
+  mapper::io::write_file_atomic(
+      dir / kSweepMarkerName,
+      "cogmap sweep output directory: its results files and plots/ are replaced by the next "
+      "sweep or --merge\n",
+      durability);
+}
 
 std::string results_file_name(Shard shard) {
   if (shard.n <= 1) return "results.csv";
@@ -112,7 +187,11 @@ std::vector<fs::path> results_files(const std::vector<fs::path>& args) {
       out.push_back(a);
       continue;
     }
-    if (!fs::is_directory(a)) throw std::runtime_error(a.string() + ": no such file or directory");
+    if (!fs::exists(a)) throw std::runtime_error(a.string() + ": no such file or directory");
+    if (!fs::is_directory(a)) {
+      throw std::runtime_error(a.string() +
+                               ": not a regular file or directory (a device, pipe or socket)");
+    }
     std::vector<fs::path> found;
     for (const auto& e : fs::directory_iterator(a)) {
       const std::string name = e.path().filename().string();

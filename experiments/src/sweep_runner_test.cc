@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <fstream>
+#include <sstream>
 
 #include "cogmap/experiments/sweep_plots.h"
 #include "cogmap/mapper/io/asr_json.h"
@@ -121,6 +122,95 @@ TEST(SweepRunner, BadVaryKeyFailsBeforeAnythingRuns) {
     const std::string what = e.what();
     EXPECT_NE(what.find("mapper.cell_scale: unknown key"), std::string::npos) << what;
     EXPECT_NE(what.find("bad.sweep.yaml"), std::string::npos) << what;
+  }
+}
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(SweepRunner, HeaderStartIsWhatRunSweepWritesBeforeTheMetrics) {
+  Fixture f = make_fixture("header");
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  const SweepOutcome out = run_sweep(f.spec, plan_sweep(f.spec, o), o, fake_run);
+  EXPECT_EQ(results_header_start(f.spec), "run,mapper.cell_scale_mm,seed");
+  EXPECT_EQ(read_all(out.results_csv).rfind(results_header_start(f.spec) + ",", 0), 0u);
+}
+
+// A user's results.csv or plots/ in --out were replaced silently (a sweep, or --merge with no
+// --out in the current directory).
+TEST(SweepRunner, DirectoryWithAUsersResultsOrPlotsIsRefused) {
+  Fixture f = make_fixture("foreign");
+  const fs::path home = f.dir / "home";
+  fs::create_directories(home / "plots");
+  std::ofstream(home / "results.csv") << "mine\n";
+  std::ofstream(home / "plots" / "holiday.png") << "png";
+  const SweepOutputs outputs{"results.csv", results_header_start(f.spec), true};
+  try {
+    check_sweep_directory(home, outputs, false);
+    FAIL() << "accepted a directory holding a user's results.csv";
+  } catch (const SweepDirectoryError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("home: holds results.csv and plots/, which no cogmap sweep wrote"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("--force"), std::string::npos) << what;
+  }
+  fs::remove(home / "results.csv");  // plots/ alone is refused too
+  EXPECT_THROW(check_sweep_directory(home, outputs, false), SweepDirectoryError);
+  EXPECT_NO_THROW(check_sweep_directory(home, {"results.csv", "run,seed", false}, false));
+  EXPECT_NO_THROW(check_sweep_directory(home, outputs, true));  // --force
+  // Another shard's file is not ours to judge: only the file this shard writes counts.
+  std::ofstream(home / "results.csv") << "mine\n";
+  EXPECT_NO_THROW(
+      check_sweep_directory(home, {"results_shard_1_of_2.csv", "run,seed", false}, false));
+  EXPECT_EQ(read_all(home / "results.csv"), "mine\n");
+}
+
+TEST(SweepRunner, OwnDirectoryIsAcceptedByMarkerOrByHeader) {
+  Fixture f = make_fixture("own");
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  const SweepOutputs outputs{"results.csv", results_header_start(f.spec), true};
+  check_sweep_directory(o.out_dir, outputs, false);  // new
+  mark_sweep_directory(o.out_dir);
+  EXPECT_TRUE(fs::exists(o.out_dir / kSweepMarkerName));
+  (void)run_sweep(f.spec, plan_sweep(f.spec, o), o, fake_run);
+  fs::create_directories(o.out_dir / "plots");
+  std::ofstream(o.out_dir / "plots" / "asr_count.png") << "png";
+  EXPECT_NO_THROW(check_sweep_directory(o.out_dir, outputs, false));  // the marker
+  // A sweep made before the marker: its results file starts with this sweep's header.
+  fs::remove(o.out_dir / kSweepMarkerName);
+  EXPECT_NO_THROW(check_sweep_directory(o.out_dir, outputs, false));
+  // ...but not another sweep's header.
+  EXPECT_THROW(
+      check_sweep_directory(o.out_dir, {"results.csv", "run,mapper.grid,seed", true}, false),
+      SweepDirectoryError);
+  // A header that merely begins like ours is not ours.
+  EXPECT_THROW(check_sweep_directory(o.out_dir, {"results.csv", "run,mapper.cell", true}, false),
+               SweepDirectoryError);
+}
+
+TEST(SweepRunner, OutputThatIsNotADirectoryOrFileIsRefusedEvenWithForce) {
+  Fixture f = make_fixture("notdir");
+  std::ofstream(f.dir / "file") << "x\n";
+  EXPECT_THROW(check_sweep_directory(f.dir / "file", {"results.csv", "run,seed", false}, true),
+               SweepDirectoryError);
+  fs::create_directories(f.dir / "out" / "results.csv");
+  EXPECT_THROW(check_sweep_directory(f.dir / "out", {"results.csv", "run,seed", false}, true),
+               SweepDirectoryError);
+}
+
+TEST(SweepRunner, MergeOfADeviceSaysWhatItIs) {
+  try {
+    (void)results_files({"/dev/zero"});
+    FAIL() << "accepted /dev/zero";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "/dev/zero: not a regular file or directory (a device, pipe or socket)");
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Checks every log reader applies (cogmap log, CARMEN, Player): bounded lines, regular files,
 // a plausible header geometry, finite numbers, time that never goes back and odometry that
-// never jumps further than the robot can drive. Internal to hw/.
+// never jumps further than the robot can drive. The ROS bag importer (hw/bag) runs check_frame
+// on its odometry samples and frames too. Internal to hw/.
 
 #include <cstddef>
 #include <filesystem>

@@ -157,4 +157,31 @@ TEST(BagReplay, BadBagsExitTwoAndWriteNothing) {
   EXPECT_FALSE(fs::exists(dir / "run4"));
 }
 
+// A pose beyond the +/-1000 m every log is held to: refused before the run directory exists
+// (it exited 1 with a partial run at 1e30 m and 0 with a 21 MB grid of nothing at 5000 m).
+TEST(BagReplay, OdometryBeyondTheLogLimitsExitsTwoAndWritesNothing) {
+  const fs::path dir = work_dir("far");
+  for (const double x : {5000.0, 1e30}) {
+    const fs::path bag = dir / "far.bag";
+    {
+      cogmap::hw::bag::testing::TestBagWriter w(bag.string());
+      for (int k = 0; k < 10; ++k) {
+        const double t = 10.0 + 0.1 * k;
+        w.odometry("/RosAria/pose", t, k == 5 ? x : 0.01 * k, 0.0, 0.0);
+        w.point_cloud("/RosAria/sonar", t + 0.05, {{1.0, 1.0 + 0.01 * k}});
+      }
+    }
+    const fs::path run = dir / "run";
+    const CliRun r =
+        cli("replay " + bag.string() + " --robot p3dx --out " + run.string(), dir / "cli.txt");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(
+        r.output.find(bag.string() + ": topic /RosAria/pose, message 5: odometry x_m must be in "
+                                     "[-1000, 1000]"),
+        std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(run));
+  }
+}
+
 }  // namespace

@@ -23,7 +23,11 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   log_nan_odometry log_inf_time log_nan_mount log_jump_1e5 log_jump_50m log_max_range_zero log_beam_width_100
   log_min_above_max log_time_backwards log_header_only log_carmen_on_cogmap log_dev_zero
   replay_name_colon replay_name_newline stale_temp_files rerun_run_directory locked_directory
-  drive_handshake_wrong_packets)
+  drive_handshake_wrong_packets
+  sonar_stats_csv_is_the_log sonar_stats_csv_exists sonar_stats_csv_is_a_directory
+  sonar_stats_min_speed_nan sonar_model_user_files sonar_model_range_nan sweep_out_user_results
+  sweep_merge_cwd_results sweep_merge_dev_zero sweep_resume_own_directory
+  drive_record_is_the_experiment drive_record_exists drive_duration_nan)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -80,7 +84,7 @@ setup() {
     key_list_set)
       short_experiment e "$W/two_rooms.yaml" 5 >"$d/e.yaml"
       cmd=("$cogmap" run "$d/e.yaml" --set 'mapper={? [a]: 1}' --out "$d/run"); want_rc=2
-      want_text="--set: mapper: value is not valid: a key must be a plain name" ;;
+      want_text="e.yaml:1: mapper: value is not valid: a key must be a plain name" ;;
     dev_zero_world)
       cmd=("$cogmap" world check /dev/zero); want_rc=1
       want_text="ERROR /dev/zero: not a regular file" ;;
@@ -259,6 +263,71 @@ PY
       cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 3 --out "$d/run"); want_rc=1
       want_text="P2OS handshake failed: no complete SYNC0-2 exchange"; limit_s=6
       check() { kill "$peer" 2>/dev/null; return 0; } ;;
+    sonar_stats_csv_is_the_log)  # the table went over its own log, exit 0
+      good_log >"$d/l.log"; sum=$(md5sum <"$d/l.log")
+      cmd=("$cogmap" sonar-stats "$d/l.log" --csv "$d/l.log" --force); want_rc=2
+      want_text="l.log: is the input $d/l.log (the same file), which would be overwritten"
+      check() { [[ $(md5sum <"$d/l.log") == "$sum" ]]; } ;;
+    sonar_stats_csv_exists)
+      good_log >"$d/l.log"; echo mine >"$d/mine.csv"
+      cmd=("$cogmap" sonar-stats "$d/l.log" --csv "$d/mine.csv"); want_rc=2
+      want_text="mine.csv: already exists; pass --force to replace it, or choose another --csv"
+      check() { [[ $(cat "$d/mine.csv") == mine ]]; } ;;
+    sonar_stats_csv_is_a_directory)
+      good_log >"$d/l.log"
+      cmd=("$cogmap" sonar-stats "$d/l.log" --csv "$d"); want_rc=2
+      want_text="$d: is a directory, not a file; choose another --csv" ;;
+    sonar_model_user_files)
+      mkdir -p "$d/home"; echo mine >"$d/home/echo_model.csv"
+      cmd=("$cogmap" sonar-model --out "$d/home"); want_rc=2
+      want_text="home/echo_model.csv: already exists; pass --force to replace it, or choose another --out"
+      check() { [[ $(cat "$d/home/echo_model.csv") == mine && $(ls -A "$d/home" | wc -l) -eq 1 ]]; } ;;
+    sweep_out_user_results)
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\n' >"$d/s.sweep.yaml"
+      mkdir -p "$d/home"; echo mine >"$d/home/results.csv"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/home" --no-figures); want_rc=2
+      want_text="home: holds results.csv, which no cogmap sweep wrote"
+      check() { [[ $(cat "$d/home/results.csv") == mine && $(ls -A "$d/home" | wc -l) -eq 1 ]]; } ;;
+    sweep_merge_cwd_results)  # no --out: the merge went over ./results.csv
+      mkdir -p "$d/cwd" "$d/shards"; echo mine >"$d/cwd/results.csv"
+      printf 'run,seed,asr_count\n0,1,2\n' >"$d/shards/results_shard_1_of_1.csv"
+      cmd=(bash -c "cd '$d/cwd' && '$cogmap' sweep --merge ../shards --no-plots"); want_rc=2
+      want_text=". (the current directory): holds results.csv, which no cogmap sweep wrote"
+      check() { [[ $(cat "$d/cwd/results.csv") == mine ]]; } ;;
+    sweep_merge_dev_zero)
+      cmd=("$cogmap" sweep --merge /dev/zero --out "$d/m"); want_rc=2
+      want_text="/dev/zero: not a regular file or directory (a device, pipe or socket)" ;;
+    sweep_resume_own_directory)  # a sweep's own directory, with or without its marker
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1, 2]\n' >"$d/s.sweep.yaml"
+      "$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw" --no-plots >/dev/null 2>&1
+      rm -rf "$d/sw/.cogmap-sweep" "$d/sw/runs/seed=2"  # as a sweep before the marker left it
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw" --no-plots); want_rc=0
+      want_text="2 runs in shard 1/1: 1 run, 1 already finished, 0 failed"
+      check() { [[ -e $d/sw/.cogmap-sweep && $(wc -l <"$d/sw/results.csv") -eq 3 ]]; } ;;
+    drive_record_is_the_experiment)  # drive truncated its own experiment file to a log
+      printf 'name: e\nworld: none\nrobot: {source: p2os}\n' >"$d/e.yaml"; sum=$(md5sum <"$d/e.yaml")
+      cmd=("$cogmap" drive --tcp 127.0.0.1:9 --experiment "$d/e.yaml" --record "$d/e.yaml" --force
+           --duration 3 --out "$d/run"); want_rc=2
+      want_text="e.yaml: is the input $d/e.yaml (the same file), which would be overwritten"
+      check() { [[ $(md5sum <"$d/e.yaml") == "$sum" && ! -e $d/run ]]; } ;;
+    drive_record_exists)
+      echo mine >"$d/old.log"
+      cmd=("$cogmap" drive --tcp 127.0.0.1:9 --record "$d/old.log" --duration 3 --out "$d/run")
+      want_rc=2; want_text="old.log: already exists; pass --force to replace it, or choose another --record"
+      check() { [[ $(cat "$d/old.log") == mine ]]; } ;;
+    sonar_model_range_nan)  # CLI11's Range lets NaN through: echo_model.csv said -nan
+      cmd=("$cogmap" sonar-model --out "$d/o" --range nan); want_rc=2
+      want_text="--range: 'nan' is not a finite number"
+      check() { [[ ! -e $d/o ]]; } ;;
+    sonar_stats_min_speed_nan)
+      good_log >"$d/l.log"
+      cmd=("$cogmap" sonar-stats "$d/l.log" --min-speed nan); want_rc=2
+      want_text="--min-speed: 'nan' is not a finite number" ;;
+    drive_duration_nan)  # reached an integer conversion
+      cmd=("$cogmap" drive --tcp 127.0.0.1:9 --duration nan --out "$d/run"); want_rc=2
+      want_text="--duration: 'nan' is not a finite number" ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

@@ -190,6 +190,50 @@ TEST(BagCorrupt, MoreTransducersThanTheModel) {
                   "sonars: pass the right --robot");
 }
 
+// A bag's odometry gets the limits a cogmap, CARMEN or Player log gets (log_checks.h): a pose
+// beyond +/-1000 m (1e30 m asked the grid for more cells than exist) or a jump the robot cannot
+// drive is refused, naming the pose message.
+void write_pose_bag(const fs::path& path, double x1_m) {
+  TestBagWriter w(path.string());
+  w.odometry("/RosAria/pose", 10.0, 0, 0, 0);
+  w.odometry("/RosAria/pose", 10.1, x1_m, 0, 0);
+  w.odometry("/RosAria/pose", 10.2, 0, 0, 0);
+  w.point_cloud("/RosAria/sonar", 10.05, {{1, 1}});
+  w.point_cloud("/RosAria/sonar", 10.15, {{1, 2}});
+}
+
+TEST(BagCorrupt, PoseBeyondTheLogCoordinateLimit) {
+  for (const double x : {5000.0, 1e30, -1e30}) {
+    const fs::path path = temp_bag("far_pose");
+    write_pose_bag(path, x);
+    const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
+    expect_contains(e, path.string() +
+                           ": topic /RosAria/pose, message 1: odometry x_m must be in "
+                           "[-1000, 1000], got ");
+  }
+}
+
+TEST(BagCorrupt, OdometryJumpBeyondTheRobotsSpeed) {
+  const fs::path path = temp_bag("jump");
+  write_pose_bag(path, 50.0);
+  const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
+  expect_contains(e, path.string() + ": topic /RosAria/pose, message 1: odometry jumps 50 m in ");
+}
+
+TEST(BagCorrupt, TfPoseBeyondTheLogCoordinateLimit) {
+  const fs::path path = temp_bag("far_tf");
+  {
+    TestBagWriter w(path.string());
+    w.tf("/tf", 10.0, 0, 0, 0);
+    w.tf("/tf", 10.1, 0, -2000, 0);
+    w.point_cloud("/RosAria/sonar", 10.05, {{1, 1}});
+  }
+  expect_contains(import_error(path, bag::testing::with_robot("p3dx")),
+                  path.string() +
+                      ": topic /tf, message 1: odometry y_m must be in [-1000, 1000], "
+                      "got -2000");
+}
+
 TEST(BagCorrupt, RobotModelMissingOrUnknown) {
   const fs::path path = temp_bag("norobot");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);

@@ -10,12 +10,46 @@
 #include <string>
 
 #include "cogmap/mapper/seam/pose2.h"
+#include "log_checks.h"
 
 namespace cogmap::hw::bag {
 namespace {
 
+std::string message_name(const std::string& topic, std::size_t index) {
+  return "topic " + topic + ", message " + std::to_string(index);
+}
+
 std::string at(const std::string& topic, std::size_t index) {
-  return "topic " + topic + ", message " + std::to_string(index) + ": ";
+  return message_name(topic, index) + ": ";
+}
+
+// The checks every log reader applies (log_checks.h): finite numbers, coordinates within the
+// log limits, time that never goes back, no odometry jump the robot could not drive. Without
+// them a pose of 1e30 m asked the grid for more cells than exist and 5000 m made a 21 MB grid
+// of nothing. Their LogError becomes a plain error here so import_ros_bag puts the file name
+// in front, as for every other bag error.
+void check_like_a_log(const mapper::SensorFrame& frame, const mapper::SensorFrame* previous,
+                      const mapper::RobotGeometry& geometry, const std::string& where) {
+  try {
+    detail::check_frame(frame, previous, geometry, LogLimits{}, where);
+  } catch (const LogError& e) {
+    throw std::runtime_error(e.what());
+  }
+}
+
+// Every odometry sample as a frame of its own, so an error names the pose message that holds
+// the bad value rather than a sonar message interpolated from it.
+void check_odometry(const std::vector<PoseMessage>& poses, double t0, const std::string& topic,
+                    const mapper::RobotGeometry& geometry) {
+  std::optional<mapper::SensorFrame> previous;
+  for (const PoseMessage& p : poses) {
+    mapper::SensorFrame frame;
+    frame.time_s = p.stamp_s - t0;
+    frame.odometry = {p.x_m, p.y_m, p.yaw_rad};
+    check_like_a_log(frame, previous ? &*previous : nullptr, geometry,
+                     message_name(topic, p.index));
+    previous = std::move(frame);
+  }
 }
 
 // Stamps on one topic must be set and never go backwards.
@@ -72,6 +106,7 @@ void build_frames(const Streams& streams, const StreamRequest& request,
                                  : "topic " + request.odometry_topic + " is empty");
   }
   const double t0 = std::min(streams.sonar.front().stamp_s, streams.poses.front().stamp_s);
+  check_odometry(streams.poses, t0, request.odometry_topic, geometry);
   const bool ranges = request.sonar == SonarEncoding::kSonarArray;
   const double max_m = geometry.sonar_max_range_m;
   std::vector<std::optional<Value>> last(geometry.sonars.size());
@@ -121,6 +156,9 @@ void build_frames(const Streams& streams, const StreamRequest& request,
     }
     if (!pose) continue;
     frame.odometry = *pose;
+    // What replay reads is the frames: they get the checks a log's frames get.
+    check_like_a_log(frame, out.frames.empty() ? nullptr : &out.frames.back(), geometry,
+                     message_name(request.sonar_topic, m.index));
     out.frames.push_back(std::move(frame));
   }
   stats.frames = out.frames.size();

@@ -18,8 +18,10 @@ inline constexpr double kMaxOdometryGapS = 0.5;
 
 /// Fills `out.frames` (time_s from the earliest stamp of either stream) and the reading counts
 /// of `stats`. Throws std::runtime_error "topic T, message K: ..." for a stamp that is zero or
-/// earlier than the one before on the same topic, a non-finite value, or more transducers than
-/// `geometry` has.
+/// earlier than the one before on the same topic, a non-finite value, more transducers than
+/// `geometry` has, or an odometry sample or frame that fails the checks every log gets
+/// (log_checks.h: |x|, |y| within LogLimits::max_coordinate_m, no jump beyond what
+/// `geometry.max_speed_mps` allows).
 void build_frames(const Streams& streams, const StreamRequest& request,
                   const mapper::RobotGeometry& geometry, ImportedLog& out, BagImportStats& stats);
 

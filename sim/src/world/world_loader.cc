@@ -13,6 +13,17 @@ namespace cogmap::sim {
 using mapper::Point2;
 using mapper::Polyline;
 
+double parse_coordinate(const yaml::Node& node) {
+  const double v = node.as<double>();
+  if (std::abs(v) > kMaxCoordinateM) {
+    std::ostringstream msg;
+    msg << "coordinate " << v << " m is beyond the +/-" << kMaxCoordinateM
+        << " m the simulator supports (single-precision physics)";
+    node.fail(msg.str());
+  }
+  return v;
+}
+
 namespace {
 
 // Two points closer than this are the same point, metres (a tenth of a millimetre).
@@ -23,10 +34,6 @@ constexpr double kMinPolygonAreaM2 = 1e-4;
 // polygon vertices closer than 2.5 mm (b2_linearSlop / 2) and then asserts: a 1-2 mm segment
 // passed `world check` and aborted the run. 1 cm keeps a factor 4 from that limit.
 constexpr double kMinFeatureM = 0.01;
-// Largest |x| or |y| of any point, metres. Box2D computes in float: at 3e6 m one float step is
-// 0.25 m and a 12 cm wall collapses (assertion); at 1 km a step is 0.06 mm. The thesis worlds
-// span under 100 m.
-constexpr double kMaxCoordinateM = 1000.0;
 
 std::string metres(double v) {
   std::ostringstream out;
@@ -34,20 +41,11 @@ std::string metres(double v) {
   return out.str();
 }
 
-double coordinate(const yaml::Node& node) {
-  const double v = node.as<double>();
-  if (std::abs(v) > kMaxCoordinateM) {
-    node.fail("coordinate " + metres(v) + " m is beyond the +/-" + metres(kMaxCoordinateM) +
-              " m the simulator supports (single-precision physics)");
-  }
-  return v;
-}
-
 SourceRef source_of(const yaml::Node& node) { return {node.line(), node.key_path()}; }
 
 Point2 parse_point(const yaml::Node& node) {
   if (!node.is_sequence() || node.size() != 2) node.fail("expected a point [x, y] in metres");
-  return {coordinate(node.at(0)), coordinate(node.at(1))};
+  return {parse_coordinate(node.at(0)), parse_coordinate(node.at(1))};
 }
 
 double parse_thickness(const yaml::Node& node) {
@@ -305,7 +303,7 @@ WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options) 
   const yaml::Node start = root["start"];
   start.expect_keys({"x_m", "y_m", "theta_deg"});
   world.start = {
-      coordinate(start["x_m"]), coordinate(start["y_m"]),
+      parse_coordinate(start["x_m"]), parse_coordinate(start["y_m"]),
       mapper::wrap_angle_rad(start.get_or<double>("theta_deg", 0.0) * std::numbers::pi / 180.0)};
   world.start_source = source_of(start);
   check_start(world, options);

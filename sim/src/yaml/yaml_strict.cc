@@ -318,6 +318,14 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   }
   YAML::Node value;
   try {
+    // YAML::Load keeps the first document and drops the rest: "3\n---\nx: 1" would set 3 and
+    // lose "x: 1" silently. A value gets the one-document check a file gets.
+    if (const int line = second_document_line(value_text); line > 0) {
+      throw ConfigError("--set", 0, key,
+                        "value holds a second YAML document (or text after the end of the "
+                        "first) at its line " +
+                            std::to_string(line) + ": a --set value is exactly one YAML value");
+    }
     value = YAML::Load(value_text.empty() ? "''" : value_text);
   } catch (const YAML::Exception& e) {
     throw ConfigError("--set", 0, key, "value is not valid YAML: " + e.msg);

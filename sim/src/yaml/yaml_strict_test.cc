@@ -130,5 +130,20 @@ TEST(YamlStrict, OverrideValueWithAListKeyIsRefused) {
       << msg;
 }
 
+// YAML::Load keeps the first document of a text: a --set value of two set the first and lost
+// the second silently. Like a file, a value is one document.
+TEST(YamlStrict, OverrideValueWithASecondDocumentIsRefused) {
+  Node root = Node::load_string("duration_s: 10\n", "e.yaml");
+  const std::string msg =
+      config_error_of([&] { apply_override(root.raw(), "duration_s=3\n---\nx: 1"); });
+  EXPECT_EQ(msg,
+            "--set: duration_s: value holds a second YAML document (or text after the end of "
+            "the first) at its line 2: a --set value is exactly one YAML value");
+  EXPECT_NE(config_error_of([&] { apply_override(root.raw(), "duration_s=[1],"); }), "");
+  EXPECT_EQ(root.raw()["duration_s"].as<double>(), 10.0);            // untouched
+  EXPECT_NO_THROW(apply_override(root.raw(), "duration_s=---\n3"));  // one document
+  EXPECT_EQ(root.raw()["duration_s"].as<double>(), 3.0);
+}
+
 }  // namespace
 }  // namespace cogmap::yaml

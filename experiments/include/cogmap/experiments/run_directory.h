@@ -31,11 +31,18 @@ inline constexpr const char* kRunLockName = ".cogmap-lock";
 /// `..` names); empty becomes `_`; at most 100 bytes. Used for every default output path.
 std::string safe_path_component(std::string_view name);
 
+/// Whether a finished run (DIR/metrics.json) may be replaced: only when the user said so
+/// (`--force`).
+enum class FinishedRun { kKeep, kReplace };
+
 /// Throws RunDirectoryError unless `dir` may take a run: it does not exist, is empty, carries
-/// the run marker, or holds only files a run writes (docs/cli.md); and it is not the folder of
-/// any of `inputs` (the experiment file, a log), which a run would overwrite.
+/// the run marker, or holds only files a run writes (docs/cli.md) with the run's own
+/// experiment.yaml or metrics.json among them; it is not the folder of any of `inputs` (the
+/// experiment file, a log), which a run would overwrite; its asrs/ and figures/ are not
+/// symbolic links (a run writes and clears them); and with kKeep it holds no finished run.
 void check_run_directory(const std::filesystem::path& dir,
-                         const std::vector<std::filesystem::path>& inputs);
+                         const std::vector<std::filesystem::path>& inputs,
+                         FinishedRun finished = FinishedRun::kKeep);
 
 /// An exclusive lock on a run directory for the object's lifetime (flock on DIR/.cogmap-lock,
 /// released by the kernel even after kill -9). Two threads or processes never write one
@@ -55,7 +62,9 @@ class RunDirectoryLock {
 
 /// Removes the products of an earlier (possibly interrupted) run from `dir`, and only those:
 /// metrics.json, trajectory.csv, map*.csv, map.svg, asr_graph.json, experiment.yaml,
-/// nav_trace.csv, explore_map.{pgm,yaml}, grid_NNN.{pgm,yaml}, asrs/NNN.json and figures/*.png.
+/// nav_trace.csv, explore_map.{pgm,yaml}, grid_NNN.{pgm,yaml}, asrs/NNN.json and the figures a
+/// run draws (figures/room_NNN_stages.png, map_before_after.png, map_error.png, graph.png);
+/// never through a symbolic link.
 void clear_run_outputs(const std::filesystem::path& dir);
 
 /// Makes `dir` ready for a run, under its lock: checks it (check_run_directory), writes the

@@ -6,12 +6,14 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/results_table.h"
 #include "cogmap/experiments/sweep.h"
+#include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
 
@@ -55,9 +57,45 @@ SweepOutcome run_sweep(const SweepSpec& spec, const std::vector<PlannedRun>& pla
 /// The results file name for a shard: results.csv for 1/1, else results_shard_K_of_N.csv.
 std::string results_file_name(Shard shard);
 
+/// The marker every `cogmap sweep` writes into its output directory before its first run: with
+/// it, the directory's results files and plots/ are a sweep's to replace on the next call.
+inline constexpr const char* kSweepMarkerName = ".cogmap-sweep";
+
+/// An output directory a sweep or a merge must not write: not a directory, or it holds a
+/// results file or plots no sweep wrote. The message names the path and what to do instead.
+class SweepDirectoryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// What a sweep or a merge is about to write into its output directory.
+struct SweepOutputs {
+  std::string results_file;  ///< results.csv or results_shard_K_of_N.csv
+  std::string header;        ///< the results file's header line, or its start (run,keys,seed)
+  bool plots = false;        ///< plots/ too
+};
+
+/// The start of the header line `run_sweep` writes for `spec`: run, the varied keys, seed (the
+/// metric columns follow). Recognises a results file of this sweep made before the marker.
+std::string results_header_start(const SweepSpec& spec);
+
+/// Throws SweepDirectoryError unless `dir` may take `outputs` (docs/reliability.md): `dir` is a
+/// directory or can be made one (no file where a folder must be), the results file is not a
+/// directory or a device, and then either none of the outputs exists, or `dir` carries
+/// kSweepMarkerName, or the existing results file's first line starts with `outputs.header` (the
+/// same sweep, run before the marker), or `force`. A user's results.csv or plots/ in `--out` (or,
+/// for --merge, the current directory) used to be replaced silently.
+void check_sweep_directory(const std::filesystem::path& dir, const SweepOutputs& outputs,
+                           bool force);
+
+/// Creates `dir` and writes kSweepMarkerName into it, atomically: shards sharing a directory may
+/// write it side by side.
+void mark_sweep_directory(const std::filesystem::path& dir,
+                          mapper::io::Durability durability = mapper::io::Durability::kSynced);
+
 /// The results files to merge from command-line arguments: a file is taken as is; a directory
 /// gives its results.csv and results_shard_*.csv (sorted). Throws std::runtime_error when an
-/// argument holds none.
+/// argument holds none or is neither a file nor a directory (a device, a pipe).
 std::vector<std::filesystem::path> results_files(const std::vector<std::filesystem::path>& args);
 
 }  // namespace cogmap::experiments

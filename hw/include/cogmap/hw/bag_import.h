@@ -49,8 +49,9 @@ struct ImportedBag {
 /// Reads `path`. Throws LogError "FILE: ..." for a file that is not a readable bag, no (or an
 /// ambiguous) sonar or odometry topic, a topic of the wrong type, an unknown or missing robot
 /// model, and "FILE: topic T, message K: ..." for a message that does not decode, a header
-/// stamp going backwards or unset, or more transducers than the model has. Nothing is returned
-/// in part.
+/// stamp going backwards or unset, more transducers than the model has, or an odometry sample
+/// or frame outside the limits every log has (LogLimits: coordinates, odometry jumps). Nothing
+/// is returned in part.
 ImportedBag import_ros_bag(const std::filesystem::path& path, const BagImportOptions& options);
 
 /// True when the file starts with the ROS 1 bag magic "#ROSBAG V2.0".
