@@ -82,17 +82,11 @@ std::string utf8_text(const Node& node) {
   return text;
 }
 
-// Throws at `key` of `map`, on the key's own line: for a key with nothing after it,
-// Node::line() would name the next key's.
-[[noreturn]] void fail_at_key(const Node& map, const std::string& key, const std::string& message) {
-  throw ConfigError(map.file(), written_line(map.raw(), key, map.line()),
-                    map.key_path().empty() ? key : map.key_path() + "." + key, message);
-}
-
 // The text of `key`, UTF-8 and not empty.
 std::string required_text(const Node& map, const std::string& key, const std::string& if_empty) {
   const Node value = map[key];  // "missing required key" when absent
-  if (value.raw().IsNull()) fail_at_key(map, key, if_empty);
+  // An empty value is reported on its key's line (Node::line()), not the next key's.
+  if (value.raw().IsNull()) value.fail(if_empty);
   std::string text = utf8_text(value);
   if (text.empty()) value.fail(if_empty);
   return text;
@@ -102,7 +96,7 @@ std::string required_text(const Node& map, const std::string& key, const std::st
 std::string optional_text(const Node& map, const std::string& key) {
   const auto value = map.child(key);
   if (!value) return "";
-  if (value->raw().IsNull()) fail_at_key(map, key, "expected a string (or no key at all)");
+  if (value->raw().IsNull()) value->fail("expected a string (or no key at all)");
   return utf8_text(*value);
 }
 

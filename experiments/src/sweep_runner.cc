@@ -4,10 +4,12 @@
 #include <atomic>
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <thread>
 
 #include "cogmap/experiments/progress.h"
+#include "cogmap/experiments/runner.h"
 #include "cogmap/mapper/io/asr_json.h"
 
 namespace cogmap::experiments {
@@ -46,6 +48,91 @@ bool holds_plots(const fs::path& dir) {
   const fs::path plots = dir / "plots";
   if (!fs::exists(fs::symlink_status(plots, ec))) return false;
   return !fs::is_directory(plots, ec) || !fs::is_empty(plots, ec);
+}
+
+// Whether key path `inner` is `outer` or lies inside it ("mapper.grid" in "mapper").
+bool within(const std::string& inner, const std::string& outer) {
+  return inner == outer ||
+         (inner.size() > outer.size() && inner.starts_with(outer) && inner[outer.size()] == '.');
+}
+
+// Whether error `e`, caused by varying `axis_key`, is the key's fault rather than
+// the value's: a key the experiment does not know (`mapper.gridd`), or a parent the key path
+// could not go through (`mapper.grid.x` with `grid: himm`). Any other error at or inside the
+// varied key is its value's (`duration_s: -1`, `world: missing.yaml`, `mapper: {gridd: 1}`).
+bool blames_key(const yaml::ConfigError& e, const std::string& axis_key) {
+  if (!within(axis_key, e.key())) return false;
+  if (e.key() != axis_key) return true;  // a parent the override made or changed
+  const std::string message = bare_message(e);
+  return message.starts_with("unknown key") ||
+         message.find("is not a mapping") != std::string::npos;
+}
+
+// The line in the sweep file of `vary.<key>` (value_index < 0) or of its value_index-th value;
+// 0 when it cannot be found. The sweep is read again: SweepSpec keeps no lines, and this runs
+// only on the way to an error message.
+int sweep_line(const fs::path& file, const std::string& key, int value_index) {
+  try {
+    const auto vary = yaml::Node::load_file(file).child("vary");
+    if (!vary) return 0;
+    if (value_index >= 0) return (*vary)[key].at(static_cast<std::size_t>(value_index)).line();
+    for (const auto& kv : vary->raw()) {
+      if (kv.first.IsScalar() && kv.first.Scalar() == key && !kv.first.Mark().is_null()) {
+        return kv.first.Mark().line + 1;
+      }
+    }
+  } catch (const std::exception&) {
+  }
+  return 0;
+}
+
+// The message without the " (from --set key=value)" load_experiment adds: in a sweep, the
+// override is the sweep's `vary` entry, which the new location names.
+std::string without_set_suffix(const std::string& message, const std::string& key,
+                               const std::string& value) {
+  const std::string suffix = " (from --set " + key + "=" + value + ")";
+  return message.ends_with(suffix) ? message.substr(0, message.size() - suffix.size()) : message;
+}
+
+// Re-raises an error loading or validating one run. An error the run's `vary` values caused is
+// reported in the sweep file, at the line of the varied key or of the offending value (the
+// experiment file's line would point at a key the sweep replaced, or at line 1 of the value's
+// own text); any other error keeps its place. Both name the sweep and the run.
+[[noreturn]] void throw_in_sweep(const yaml::ConfigError& e, const SweepSpec& spec,
+                                 const SweepRun& run) {
+  const std::string in_run = "run " + run.dir_name() + ")";
+  if (e.file() == spec.base.string()) {
+    for (const auto& [key, value] : run.values) {
+      if (!within(e.key(), key) && !within(key, e.key())) continue;
+      const auto axis = std::find_if(spec.vary.begin(), spec.vary.end(),
+                                     [&](const SweepAxis& a) { return a.key == key; });
+      const auto at = std::find(axis->values.begin(), axis->values.end(), value);
+      const int index = blames_key(e, key) || at == axis->values.end()
+                            ? -1
+                            : static_cast<int>(at - axis->values.begin());
+      std::string message = without_set_suffix(bare_message(e), key, value);
+      if (e.key() != key) message = e.key() + ": " + message;
+      const std::string where =
+          "vary." + key + (index < 0 ? "" : "[" + std::to_string(index) + "]");
+      throw yaml::ConfigError(spec.file.string(), sweep_line(spec.file, key, index), where,
+                              message + " (base " + spec.base.string() + ", " + in_run);
+    }
+  }
+  throw yaml::ConfigError(e.file(), e.line(), e.key(),
+                          bare_message(e) + " (in sweep " + spec.file.string() + ", " + in_run);
+}
+
+// Checks once per world and robot block what only a run would find (the world file loads, the
+// robot block parses): a sweep whose second value names a missing world failed only after the
+// first value's runs had run.
+void validate_once(const Experiment& experiment, std::set<std::string>& validated) {
+  std::string id = experiment.world.string();
+  if (experiment.robot) {
+    YAML::Emitter robot;
+    robot << experiment.robot->raw();
+    id += std::string("\n") + robot.c_str();
+  }
+  if (validated.insert(id).second) validate_experiment(experiment);
 }
 
 }  // namespace
@@ -107,16 +194,15 @@ std::string results_file_name(Shard shard) {
 
 std::vector<PlannedRun> plan_sweep(const SweepSpec& spec, const SweepOptions& options) {
   std::vector<PlannedRun> planned;
+  std::set<std::string> validated;
   for (const SweepRun& run : shard_runs(expand_sweep(spec), options.shard)) {
     PlannedRun p;
     p.run = run;
     try {
       p.experiment = load_experiment(spec.base, run.overrides(), run.seed);
+      validate_once(p.experiment, validated);
     } catch (const yaml::ConfigError& e) {
-      // Name the sweep too: the key that failed came from its `vary` block.
-      throw yaml::ConfigError(
-          e.file(), e.line(), e.key(),
-          bare_message(e) + " (in sweep " + spec.file.string() + ", run " + run.dir_name() + ")");
+      throw_in_sweep(e, spec, run);
     }
     p.dir = options.out_dir / "runs" / run.dir_name();
     planned.push_back(std::move(p));

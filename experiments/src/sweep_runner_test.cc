@@ -25,6 +25,10 @@ Fixture make_fixture(const std::string& name) {
   fs::remove_all(f.dir);
   fs::create_directories(f.dir);
   std::ofstream(f.dir / "base.yaml") << "name: base\nworld: w.yaml\n";
+  // plan_sweep loads each run's world: a square room.
+  std::ofstream(f.dir / "w.yaml")
+      << "name: w\nwalls: {polylines: [[[0, 0], [5, 0], [5, 5], [0, 5], [0, 0]]]}\n"
+         "start: {x_m: 2, y_m: 2}\n";
   std::ofstream(f.dir / "s.sweep.yaml")
       << "base: base.yaml\nseeds: [1, 2]\nvary:\n  mapper.cell_scale_mm: [55, 100]\n";
   f.spec = load_sweep(f.dir / "s.sweep.yaml");
@@ -123,6 +127,58 @@ TEST(SweepRunner, BadVaryKeyFailsBeforeAnythingRuns) {
     EXPECT_NE(what.find("mapper.cell_scale: unknown key"), std::string::npos) << what;
     EXPECT_NE(what.find("bad.sweep.yaml"), std::string::npos) << what;
   }
+}
+
+// The message of the ConfigError plan_sweep throws for the sweep file `text` ("" for none).
+std::string plan_error(const Fixture& f, const std::string& text) {
+  std::ofstream(f.dir / "bad.sweep.yaml") << text;
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  try {
+    (void)plan_sweep(load_sweep(f.dir / "bad.sweep.yaml"), o);
+  } catch (const yaml::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A missing world as the second value of `vary` failed only at run time: the first value's runs
+// had run, the sweep exited 1, and the message pointed at line 1 of the base experiment.
+TEST(SweepRunner, BadValueFailsBeforeAnythingRunsAtItsLineInTheSweep) {
+  Fixture f = make_fixture("badvalue");
+  const std::string sweep = (f.dir / "bad.sweep.yaml").string();
+  const std::string base = (f.dir / "base.yaml").string();
+  EXPECT_EQ(plan_error(f,
+                       "base: base.yaml\nseeds: [1]\nvary:\n  world:\n    - w.yaml\n    - "
+                       "missing.yaml\n"),
+            sweep + ":6: vary.world[1]: world file " + (f.dir / "missing.yaml").string() +
+                ": cannot open file (base " + base + ", run world=missing.yaml,seed=1)");
+  EXPECT_EQ(plan_error(f, "base: base.yaml\nseeds: [1]\nvary:\n  duration_s:\n    - 5\n    - -1\n"),
+            sweep + ":6: vary.duration_s[1]: must be greater than 0, got -1 (base " + base +
+                ", run duration_s=-1,seed=1)");
+  // A key the value brings is the value's fault.
+  const std::string nested =
+      plan_error(f, "base: base.yaml\nseeds: [1]\nvary:\n  mapper:\n    - {gridd: 1}\n");
+  EXPECT_EQ(nested.rfind(sweep + ":5: vary.mapper[0]: mapper.gridd: unknown key (allowed: ", 0), 0u)
+      << nested;
+}
+
+// An unknown varied key was reported as "base.yaml: mapper.gridd: unknown key", at no line
+// of the sweep (or at line 1 of the base experiment).
+TEST(SweepRunner, UnknownVaryKeyIsReportedAtItsLineInTheSweep) {
+  Fixture f = make_fixture("badkey");
+  const std::string sweep = (f.dir / "bad.sweep.yaml").string();
+  const std::string what =
+      plan_error(f, "base: base.yaml\nseeds: [1]\nvary:\n  mapper.gridd:\n    - himm\n");
+  EXPECT_EQ(what.rfind(sweep + ":4: vary.mapper.gridd: unknown key (allowed: grid,", 0), 0u)
+      << what;
+  EXPECT_TRUE(what.ends_with(" (base " + (f.dir / "base.yaml").string() +
+                             ", run mapper.gridd=himm,seed=1)"))
+      << what;
+  // A key path through a value that is no mapping: the key's fault too.
+  const std::string through =
+      plan_error(f, "base: base.yaml\nseeds: [1]\nvary:\n  name.x:\n    - 1\n");
+  EXPECT_EQ(through.rfind(sweep + ":4: vary.name.x: ", 0), 0u) << through;
 }
 
 std::string read_all(const fs::path& p) {

@@ -27,7 +27,9 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sonar_stats_csv_is_the_log sonar_stats_csv_exists sonar_stats_csv_is_a_directory
   sonar_stats_min_speed_nan sonar_model_user_files sonar_model_range_nan sweep_out_user_results
   sweep_merge_cwd_results sweep_merge_dev_zero sweep_resume_own_directory
-  drive_record_is_the_experiment drive_record_exists drive_duration_nan)
+  drive_record_is_the_experiment drive_record_exists drive_duration_nan
+  sweep_vary_missing_world sweep_vary_unknown_key sweep_merge_negative_run sweep_merge_text_run
+  experiment_empty_value)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -328,6 +330,31 @@ PY
     drive_duration_nan)  # reached an integer conversion
       cmd=("$cogmap" drive --tcp 127.0.0.1:9 --duration nan --out "$d/run"); want_rc=2
       want_text="--duration: 'nan' is not a finite number" ;;
+    sweep_vary_missing_world)  # ran the first value's runs, then exit 1 naming e.yaml:1
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\nvary:\n  world:\n    - %s/two_rooms.yaml\n    - missing.yaml\n' \
+        "$W" >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw" --no-plots); want_rc=2
+      want_text="s.sweep.yaml:6: vary.world[1]: world file $d/missing.yaml: cannot open file"
+      check() { [[ ! -e $d/sw ]]; } ;;
+    sweep_vary_unknown_key)  # named e.yaml, not the sweep's line
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\nvary:\n  mapper.gridd:\n    - himm\n' >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw"); want_rc=2
+      want_text="s.sweep.yaml:4: vary.mapper.gridd: unknown key (allowed: grid," ;;
+    sweep_merge_negative_run)  # -5 was read as 2^64 - 5 and merged, exit 0
+      printf 'run,seed,asr_count\n0,1,2\n-5,1,2\n' >"$d/results.csv"
+      cmd=("$cogmap" sweep --merge "$d/results.csv" --out "$d/m" --no-plots); want_rc=2
+      want_text="results.csv:3: run: '-5' is not a run index (a whole number, 0 or more)"
+      check() { [[ ! -e $d/m ]]; } ;;
+    sweep_merge_text_run)  # no line; a quoted field spans two lines, a blank line is skipped
+      printf 'run,seed,note\n0,1,"two\nlines"\n\nabc,1,x\n' >"$d/results.csv"
+      cmd=("$cogmap" sweep --merge "$d/results.csv" --out "$d/m" --no-plots); want_rc=2
+      want_text="results.csv:5: run: 'abc' is not a run index" ;;
+    experiment_empty_value)  # yaml-cpp marks an empty value at the next key: line 4
+      printf 'name: e\nworld: %s/two_rooms.yaml\nduration_s:\nrobot: {source: sim}\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:3: duration_s: expected a number" ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

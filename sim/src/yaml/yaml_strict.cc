@@ -40,6 +40,14 @@ int line_of(const YAML::Node& node) {
   return mark.is_null() ? 0 : mark.line + 1;
 }
 
+// The line of `key` in `map` as the file wrote it; 0 for a key --set created (no mark).
+int key_line_of(const YAML::Node& map, const std::string& key) {
+  for (const auto& kv : map) {
+    if (kv.first.IsScalar() && kv.first.Scalar() == key) return line_of(kv.first);
+  }
+  return 0;
+}
+
 // Walks the whole tree once after parsing: yaml-cpp accepts keys that are lists or mappings
 // (which later crash any `as<std::string>()` on a key) and keeps only the first of two equal
 // keys, silently. Both are refused here, with their lines, and the tree's size is bounded.
@@ -196,8 +204,10 @@ Node Node::load_string(const std::string& text, const std::string& file, const L
 }
 
 int Node::line() const {
-  const YAML::Mark mark = node_.Mark();
-  return mark.is_null() ? 0 : mark.line + 1;
+  // An empty value's mark is the next token's (the next key, or past the end of its block):
+  // "duration_s:" and nothing was reported a line too far down. Its key is where it was written.
+  if (key_line_ > 0 && (node_.IsNull() || node_.Mark().is_null())) return key_line_;
+  return line_of(node_);
 }
 
 void Node::fail(const std::string& message) const {
@@ -229,18 +239,24 @@ void Node::expect_keys(std::initializer_list<std::string_view> allowed) const {
   }
 }
 
+Node Node::keyed_child(const YAML::Node& value, const std::string& key) const {
+  Node c(value, file_, join_key(key_path_, key));
+  c.key_line_ = key_line_of(node_, key);
+  return c;
+}
+
 Node Node::operator[](const std::string& key) const {
   expect_map();
   const YAML::Node c = node_[key];
   if (!c.IsDefined()) fail("missing required key '" + key + "'");
-  return Node(c, file_, join_key(key_path_, key));
+  return keyed_child(c, key);
 }
 
 std::optional<Node> Node::child(const std::string& key) const {
   expect_map();
   const YAML::Node c = node_[key];
   if (!c.IsDefined()) return std::nullopt;
-  return Node(c, file_, join_key(key_path_, key));
+  return keyed_child(c, key);
 }
 
 Node Node::at(std::size_t i) const {

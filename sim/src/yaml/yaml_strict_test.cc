@@ -28,6 +28,22 @@ TEST(YamlStrict, WrongTypeAndMissingKey) {
   EXPECT_EQ(root.get_or<double>("missing", 4.5), 4.5);
 }
 
+// yaml-cpp marks an empty value ("key:" and nothing) at the next token: a key with nothing
+// after it was reported on the next key's line, or past the end of its block.
+TEST(YamlStrict, EmptyValueIsReportedOnItsKeysLine) {
+  const Node root = Node::load_string(
+      "a: 1\nduration_s:\nrobot:\n  speed:\n\n  turn: 2\nnone: ~\nlast:\n", "e.yaml");
+  EXPECT_EQ(config_error_of([&] { root.get<double>("duration_s"); }),
+            "e.yaml:2: duration_s: expected a number");
+  EXPECT_EQ(config_error_of([&] { root["robot"].get_or<double>("speed", 0.0); }),
+            "e.yaml:4: robot.speed: expected a number");
+  EXPECT_EQ(root["none"].line(), 7);
+  EXPECT_EQ(root.child("last")->line(), 8);
+  // Values keep their own line: a block's is its first key's.
+  EXPECT_EQ(root["robot"].line(), 4);
+  EXPECT_EQ(root["robot"]["turn"].line(), 6);
+}
+
 TEST(YamlStrict, SyntaxErrorReportsLine) {
   const std::string msg = config_error_of([] { Node::load_string("a: 1\nb: [1, 2\n", "z.yaml"); });
   EXPECT_EQ(msg.rfind("z.yaml:", 0), 0u) << msg;

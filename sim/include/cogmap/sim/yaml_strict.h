@@ -59,7 +59,10 @@ class Node {
   YAML::Node& raw() { return node_; }
   const std::string& file() const { return file_; }
   const std::string& key_path() const { return key_path_; }
-  int line() const;  ///< 1-based line of this node, 0 when unknown
+  /// 1-based line of this node, 0 when unknown. A child reached by its key (operator[],
+  /// child) with an empty value ("key:" and nothing, or a value set in code) is on its key's
+  /// line: yaml-cpp marks an empty value at the next token, a line or more further down.
+  int line() const;
 
   bool is_map() const { return node_.IsMap(); }
   bool is_sequence() const { return node_.IsSequence(); }
@@ -100,9 +103,12 @@ class Node {
   [[noreturn]] void fail(const std::string& message) const;
 
  private:
+  Node keyed_child(const YAML::Node& value, const std::string& key) const;
+
   YAML::Node node_;
   std::string file_;
   std::string key_path_;
+  int key_line_ = 0;  ///< line of the key this node is the value of; 0 for none or unknown
 };
 
 /// Applies one `--set a.b.c=value` override to a document: walks (creating mappings as needed)
