@@ -1,7 +1,6 @@
 // `cogmap sweep SWEEP.yaml` and `cogmap sweep --merge DIR...` (docs/sweeps.md).
 #include <CLI/CLI.hpp>
 
-#include <charconv>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -67,53 +66,6 @@ void plot(const experiments::ResultsTable& table, const fs::path& out, bool enab
   }
 }
 
-// The line each record of CSV `text` starts on, counting records as parse_csv does: blank
-// lines hold none, a quoted field may span lines. parse_csv keeps no lines.
-std::vector<int> record_lines(const std::string& text) {
-  std::vector<int> starts;
-  int line = 1;
-  bool in_quotes = false, in_record = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    const bool crlf = c == '\r' && i + 1 < text.size() && text[i + 1] == '\n';
-    const bool newline = c == '\n' || (c == '\r' && !crlf);
-    if (in_quotes) {
-      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
-        ++i;  // an escaped quote
-      } else if (c == '"') {
-        in_quotes = false;
-      }
-    } else if (c == '\n' || c == '\r') {
-      in_record = false;
-    } else {
-      if (!in_record) starts.push_back(line);
-      in_record = true;
-      in_quotes = c == '"';
-    }
-    if (newline) ++line;
-  }
-  return starts;
-}
-
-// Every row's `run` must be a run index, a whole number 0 or more: merge_results read it with
-// stoull, which took "-5" as 2^64 - 5 (merged as one more row, exit 0) and named no line for
-// "abc". `text` is the file `table` was parsed from, for the line.
-void check_run_column(const experiments::ResultsTable& table, const std::string& text,
-                      const std::string& name) {
-  if (table.header.empty() || table.header.front() != "run") return;  // merge_results says so
-  const std::vector<int> lines = record_lines(text);
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    const std::string& cell = table.rows[r].front();
-    std::uint64_t run = 0;
-    const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), run);
-    if (!cell.empty() && ec == std::errc() && end == cell.data() + cell.size()) continue;
-    const std::string at = r + 1 < lines.size() ? ":" + std::to_string(lines[r + 1]) : "";
-    const std::string shown = cell.size() > 40 ? cell.substr(0, 40) + "..." : cell;
-    throw std::runtime_error(name + at + ": run: '" + shown +
-                             "' is not a run index (a whole number, 0 or more)");
-  }
-}
-
 int merge(const SweepArgs& args) {
   const fs::path out = args.out.empty() ? fs::path(".") : fs::path(args.out);
   try {
@@ -121,13 +73,11 @@ int merge(const SweepArgs& args) {
     std::vector<std::pair<std::string, experiments::ResultsTable>> tables;
     for (const fs::path& f : experiments::results_files(dirs)) {
       if (fs::weakly_canonical(f) == fs::weakly_canonical(out / "results.csv")) continue;
-      const std::string text = read_text(f);
-      tables.emplace_back(f.string(), experiments::parse_csv(text, f.string()));
-      check_run_column(tables.back().second, text, f.string());
+      tables.emplace_back(f.string(), experiments::parse_csv(read_text(f), f.string()));
     }
     const experiments::ResultsTable merged = experiments::merge_results(tables);
     // The header line: an earlier merge of the same results wrote the same one.
-    std::string header = experiments::to_csv({merged.header, {}});
+    std::string header = experiments::to_csv({merged.header, {}, {}});
     header.pop_back();
     experiments::check_sweep_directory(out, {"results.csv", header, !args.no_plots}, args.force);
     mapper::io::write_file_atomic(out / "results.csv", experiments::to_csv(merged));

@@ -1,5 +1,8 @@
 #include "cogmap/experiments/results_table.h"
 
+#include <charconv>
+#include <cstdint>
+
 #include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -42,12 +45,19 @@ std::string quote(const std::string& field) {
   return out + "\"";
 }
 
-std::size_t run_number(const std::vector<std::string>& row, const std::string& name) {
-  try {
-    return static_cast<std::size_t>(std::stoull(row.at(0)));
-  } catch (const std::exception&) {
-    throw std::runtime_error(name + ": a row's 'run' column is not a run index");
+// Row `r`'s run index: a whole number, 0 or more (stoull took "-5" as 2^64 - 5, merged as one
+// more run, and named no line for "abc").
+std::size_t run_number(const ResultsTable& table, std::size_t r, const std::string& name) {
+  const std::string& cell = table.rows[r].at(0);
+  std::uint64_t run = 0;
+  const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), run);
+  if (!cell.empty() && ec == std::errc() && end == cell.data() + cell.size()) {
+    return static_cast<std::size_t>(run);
   }
+  const std::string at = r < table.row_lines.size() ? ":" + std::to_string(table.row_lines[r]) : "";
+  const std::string shown = cell.size() > 40 ? cell.substr(0, 40) + "..." : cell;
+  throw std::runtime_error(name + at + ": run: '" + shown +
+                           "' is not a run index (a whole number, 0 or more)");
 }
 
 }  // namespace
@@ -104,11 +114,14 @@ std::string to_csv(const ResultsTable& table) {
 
 ResultsTable parse_csv(const std::string& text, const std::string& name) {
   std::vector<std::vector<std::string>> lines;
+  std::vector<int> starts;  // the line each record starts on
   std::vector<std::string> row;
   std::string field;
   bool in_quotes = false, any = false;
+  int line = 1, record_line = 1;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
+    if (!any && field.empty() && row.empty()) record_line = line;
     if (in_quotes) {
       if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
         field += '"';
@@ -116,6 +129,7 @@ ResultsTable parse_csv(const std::string& text, const std::string& name) {
       } else if (c == '"') {
         in_quotes = false;
       } else {
+        if (c == '\n' || (c == '\r' && !(i + 1 < text.size() && text[i + 1] == '\n'))) ++line;
         field += c;
       }
       continue;
@@ -132,7 +146,9 @@ ResultsTable parse_csv(const std::string& text, const std::string& name) {
       if (any || !field.empty()) {
         row.push_back(std::move(field));
         lines.push_back(std::move(row));
+        starts.push_back(record_line);
       }
+      ++line;
       row.clear();
       field.clear();
       any = false;
@@ -145,17 +161,19 @@ ResultsTable parse_csv(const std::string& text, const std::string& name) {
   if (any || !field.empty()) {
     row.push_back(std::move(field));
     lines.push_back(std::move(row));
+    starts.push_back(record_line);
   }
   if (lines.empty()) throw std::runtime_error(name + ": empty file, expected a header");
   ResultsTable t;
   t.header = std::move(lines.front());
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].size() != t.header.size()) {
-      throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": expected " +
+      throw std::runtime_error(name + ":" + std::to_string(starts[i]) + ": expected " +
                                std::to_string(t.header.size()) + " columns, got " +
                                std::to_string(lines[i].size()));
     }
     t.rows.push_back(std::move(lines[i]));
+    t.row_lines.push_back(starts[i]);
   }
   return t;
 }
@@ -173,8 +191,9 @@ ResultsTable merge_results(const std::vector<std::pair<std::string, ResultsTable
       throw std::runtime_error(name + ": header differs from " + tables.front().first +
                                " (results of different sweeps?)");
     }
-    for (const auto& row : table.rows) {
-      const std::size_t run = run_number(row, name);
+    for (std::size_t r = 0; r < table.rows.size(); ++r) {
+      const std::vector<std::string>& row = table.rows[r];
+      const std::size_t run = run_number(table, r, name);
       const auto [it, inserted] = by_run.emplace(run, std::make_pair(name, row));
       if (!inserted && it->second.second != row) {
         throw std::runtime_error(name + ": run " + std::to_string(run) + " differs from " +

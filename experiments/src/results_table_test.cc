@@ -67,5 +67,34 @@ TEST(ResultsTable, RaggedCsvIsAnError) {
   EXPECT_THROW((void)parse_csv("", "empty.csv"), std::runtime_error);
 }
 
+std::string merge_error(const std::string& csv) {
+  try {
+    (void)merge_results({{"r.csv", parse_csv(csv, "r.csv")}});
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ResultsTable, RowsKnowTheirLinesAndRunsMustBeIndices) {
+  // A quoted field over two lines and a blank line: the third row starts on line 6.
+  const std::string csv = "run,name\n0,\"two\nlines\"\n\n1,b\n-5,c\n";
+  const ResultsTable t = parse_csv(csv, "r.csv");
+  EXPECT_EQ(t.row_lines, (std::vector<int>{2, 5, 6}));
+  EXPECT_EQ(merge_error(csv), "r.csv:6: run: '-5' is not a run index (a whole number, 0 or more)");
+  EXPECT_EQ(merge_error("run,m\n0,1\nabc,2\n"),
+            "r.csv:3: run: 'abc' is not a run index (a whole number, 0 or more)");
+  EXPECT_EQ(merge_error("run,m\n0,1\n1.5,2\n"),
+            "r.csv:3: run: '1.5' is not a run index (a whole number, 0 or more)");
+  EXPECT_EQ(merge_error("run,m\n0,1\n7,2\n"), "");
+  // A ragged row is named by its own line, not its record number.
+  try {
+    (void)parse_csv("run,m\n0,\"a\nb\"\n1\n", "bad.csv");
+    FAIL() << "ragged row accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "bad.csv:4: expected 2 columns, got 1");
+  }
+}
+
 }  // namespace
 }  // namespace cogmap::experiments

@@ -15,6 +15,9 @@ namespace cogmap::experiments {
 struct ResultsTable {
   std::vector<std::string> header;
   std::vector<std::vector<std::string>> rows;
+  /// The 1-based line each of `rows` starts on in the text parse_csv read (a quoted field may
+  /// span lines, blank lines hold no row), so errors name it; empty for built tables.
+  std::vector<int> row_lines;
 };
 
 /// The scalars of a metrics.json document as (dotted key, text) in document order: numbers in
