@@ -18,6 +18,8 @@
 #include <system_error>
 #include <vector>
 
+#include "cogmap/experiments/run_directory.h"
+
 namespace cogmap::cli {
 
 namespace detail {
@@ -94,10 +96,8 @@ inline void check_output_file(const std::filesystem::path& path, std::string_vie
   if (fs::exists(status) && !fs::is_regular_file(status)) {
     throw OutputPathError(name + ": not a regular file (a device, pipe or socket); " + other);
   }
-  fs::path up = fs::absolute(path, ec).parent_path();
-  while (!fs::exists(up, ec) && up.has_relative_path()) up = up.parent_path();
-  if (fs::exists(up, ec) && !fs::is_directory(up, ec)) {
-    throw OutputPathError(name + ": " + up.string() + " is a file, not a directory; " + other);
+  if (const auto up = experiments::file_in_the_way(fs::absolute(path, ec).parent_path())) {
+    throw OutputPathError(name + ": " + up->string() + " is a file, not a directory; " + other);
   }
   // symlink_status: a link is the user's file too, even when it points nowhere.
   if (fs::exists(fs::symlink_status(path, ec)) && !force) {

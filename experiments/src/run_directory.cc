@@ -174,6 +174,14 @@ void check_run_directory(const fs::path& dir, const std::vector<fs::path>& input
   }
 }
 
+std::optional<fs::path> file_in_the_way(const fs::path& folder) {
+  std::error_code ec;
+  fs::path up = fs::absolute(folder, ec);
+  while (!fs::exists(up, ec) && up.has_relative_path()) up = up.parent_path();
+  if (fs::exists(up, ec) && !fs::is_directory(up, ec)) return up;
+  return std::nullopt;
+}
+
 RunDirectoryLock::RunDirectoryLock(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);

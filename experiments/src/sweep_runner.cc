@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "cogmap/experiments/progress.h"
+#include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/runner.h"
 #include "cogmap/mapper/io/asr_json.h"
 
@@ -148,10 +149,8 @@ std::string results_header_start(const SweepSpec& spec) {
 void check_sweep_directory(const fs::path& dir, const SweepOutputs& outputs, bool force) {
   std::error_code ec;
   // `dir`, or the nearest of its ancestors that exists (the rest is created), must be a folder.
-  fs::path up = fs::absolute(dir, ec);
-  while (!fs::exists(up, ec) && up.has_relative_path()) up = up.parent_path();
-  if (fs::exists(up, ec) && !fs::is_directory(up, ec)) {
-    throw SweepDirectoryError(dir.string() + ": " + up.string() +
+  if (const auto up = file_in_the_way(dir)) {
+    throw SweepDirectoryError(dir.string() + ": " + up->string() +
                               " is not a directory; choose another --out");
   }
   const fs::path results = dir / outputs.results_file;

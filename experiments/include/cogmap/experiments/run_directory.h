@@ -4,6 +4,7 @@
 /// the clean-up of an interrupted run, and the experiment.yaml that makes a run re-runnable.
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -43,6 +44,11 @@ enum class FinishedRun { kKeep, kReplace };
 void check_run_directory(const std::filesystem::path& dir,
                          const std::vector<std::filesystem::path>& inputs,
                          FinishedRun finished = FinishedRun::kKeep);
+
+/// The nearest of `folder` and its ancestors that exists, when that one is not a directory (a
+/// file in the way: the writers create missing folders, but cannot turn a file into one);
+/// nullopt when the folder exists or can be created.
+std::optional<std::filesystem::path> file_in_the_way(const std::filesystem::path& folder);
 
 /// An exclusive lock on a run directory for the object's lifetime (flock on DIR/.cogmap-lock,
 /// released by the kernel even after kill -9). Two threads or processes never write one
