@@ -1,6 +1,7 @@
 #include "log_checks.h"
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <system_error>
@@ -21,7 +22,41 @@ void in_range(double v, double lo, double hi, const char* field, const std::stri
   }
 }
 
+// What a file that is no text log may start with, and what to tell its owner.
+struct Magic {
+  std::string_view bytes;
+  const char* what;
+};
+constexpr Magic kNotText[] = {
+    {"\x1f\x8b", "gzip-compressed: decompress it first (gunzip -k FILE)"},
+    {std::string_view("\xfd"
+                      "7zXZ\0",
+                      6),
+     "xz-compressed: decompress it first (unxz -k FILE)"},
+    {"\x28\xb5\x2f\xfd", "zstd-compressed: decompress it first (unzstd FILE)"},
+    {"PK\x03\x04", "a zip archive: extract the log from it first (unzip FILE)"},
+    {"\xff\xfe", "UTF-16 text (as some Windows editors save it): save it as UTF-8"},
+    {"\xfe\xff", "UTF-16 text (as some Windows editors save it): save it as UTF-8"},
+};
+
 }  // namespace
+
+std::string printable(std::string_view text, std::size_t max_bytes) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < text.size() && i < max_bytes; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out.push_back(static_cast<char>(c));
+    } else {
+      out += "\\x";
+      out.push_back(kHex[c >> 4]);
+      out.push_back(kHex[c & 15]);
+    }
+  }
+  if (text.size() > max_bytes) out += "... (" + std::to_string(text.size()) + " bytes)";
+  return out;
+}
 
 void require_regular_file(const std::filesystem::path& path) {
   std::error_code ec;
@@ -32,7 +67,40 @@ void require_regular_file(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(status)) {
     throw LogError(path.string() + ": not a regular file (a device, pipe or directory)");
   }
+  std::ifstream in(path, std::ios::binary);
+  char head[8] = {};
+  in.read(head, sizeof head);
+  const std::string_view start(head, static_cast<std::size_t>(in.gcount()));
+  if (start.size() >= 4 && start.substr(0, 3) == "BZh" && start[3] >= '1' && start[3] <= '9') {
+    throw LogError(path.string() +
+                   ": not a text log: bzip2-compressed: decompress it first (bunzip2 -k FILE)");
+  }
+  for (const Magic& m : kNotText) {
+    if (start.substr(0, m.bytes.size()) == m.bytes) {
+      throw LogError(path.string() + ": not a text log: " + m.what);
+    }
+  }
 }
+
+namespace {
+
+// A UTF-8 byte order mark before line 1 (Windows editors add one) made "cogmap-log 1 ..." an
+// unknown first word, reported as "expected a cogmap log line, got 'cogmap-log 1 ...'". A line
+// of NUL bytes (a file whose last blocks were allocated but never written) is said as such.
+// False for an empty line at end of file.
+bool finish_line(std::string& line, const std::filesystem::path& path, std::size_t line_no) {
+  if (line_no == 1 && line.rfind("\xef\xbb\xbf", 0) == 0) line.erase(0, 3);
+  if (!line.empty() && line.find_first_not_of('\0') == std::string::npos) {
+    throw LogError(path.string() + ":" + std::to_string(line_no) + ": " +
+                   std::to_string(line.size()) +
+                   " NUL bytes instead of a line: the end of the file was never written (power "
+                   "lost or disk full while recording?); the lines before it are whole, cut the "
+                   "file there to use them");
+  }
+  return !line.empty();
+}
+
+}  // namespace
 
 bool read_bounded_line(std::istream& in, std::string& line, const std::filesystem::path& path,
                        std::size_t line_no, const LogLimits& limits) {
@@ -45,9 +113,12 @@ bool read_bounded_line(std::istream& in, std::string& line, const std::filesyste
     if (c == std::char_traits<char>::eof()) {
       in.setstate(std::ios::eofbit);
       if (line.empty()) in.setstate(std::ios::failbit);
-      return !line.empty();
+      return finish_line(line, path, line_no);
     }
-    if (c == '\n') return true;
+    if (c == '\n') {
+      finish_line(line, path, line_no);
+      return true;
+    }
     if (line.size() >= limits.max_line_bytes) {
       throw LogError(path.string() + ":" + std::to_string(line_no) + ": line longer than " +
                      std::to_string(limits.max_line_bytes) + " bytes: not a text log");

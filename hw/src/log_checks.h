@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <istream>
 #include <string>
+#include <string_view>
 
 #include "cogmap/hw/robot_log.h"
 #include "cogmap/mapper/seam/robot_geometry.h"
@@ -15,14 +16,23 @@
 
 namespace cogmap::hw::detail {
 
-/// Throws LogError unless `path` names a regular file (not /dev/zero, a pipe or a directory).
+/// Throws LogError unless `path` names a regular file (not /dev/zero, a pipe or a directory)
+/// that may be text: a gzip, bzip2, xz, zstd or zip archive (logs are shipped compressed) or
+/// UTF-16 text is named as such, with what to do, instead of failing on its first line.
 void require_regular_file(const std::filesystem::path& path);
 
-/// std::getline with a bound: reads one line into `line`; false at end of file. Throws
-/// LogError naming `path` and the line when a line exceeds limits.max_line_bytes (a log of
-/// NUL bytes has no newline at all).
+/// std::getline with a bound: reads one line into `line`; false at end of file. A UTF-8 byte
+/// order mark opening line 1 is dropped (an editor's, not the log's). Throws LogError naming
+/// `path` and the line when a line exceeds limits.max_line_bytes (a log of NUL bytes has no
+/// newline at all) or is nothing but NUL bytes (the tail of a file whose last blocks were never
+/// written: power lost while recording).
 bool read_bounded_line(std::istream& in, std::string& line, const std::filesystem::path& path,
                        std::size_t line_no, const LogLimits& limits);
+
+/// `text` fit to quote in an error message: printable ASCII as it is, every other byte as
+/// \xNN (a NUL ended the message there, binary garbled the terminal), and at most `max_bytes`
+/// of it, then "... (N bytes)".
+std::string printable(std::string_view text, std::size_t max_bytes = 80);
 
 /// Throws LogError ("<where>: <field> ...") for geometry no robot has: ranges, beam width,
 /// body and limits non-finite, non-positive or far outside a mobile robot's.

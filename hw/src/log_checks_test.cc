@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cogmap/hw/log_import.h"
 #include "cogmap/hw/log_robot.h"
@@ -29,7 +32,7 @@ fs::path write_log(const std::string& name, const std::string& text) {
   return dir / name;
 }
 
-// A 5-frame log moving 1 cm per 100 ms, with `frame3` as its third frame line (line 4).
+// A 4-frame log moving 1 cm per 100 ms, with `frame3` as its third frame line (line 4).
 std::string log_with(const std::string& header, const std::string& frame3) {
   return header + "\nF 0.1 0.01 0 0 0 0 - 1 0,1.5,1,0.1\nF 0.2 0.02 0 0 0 0 - 0\n" + frame3 +
          "\nF 0.4 0.04 0 0 0 0 - 0\n";
@@ -138,6 +141,115 @@ TEST(LogChecks, ImportedFramesGetTheSameChecks) {
               std::string::npos)
         << e.what();
   }
+}
+
+// Logs as they come from elsewhere (the 2026-12-07 audit). A UTF-8 byte order mark, which
+// Windows editors put before the first line, made the first word "\xef\xbb\xbfcogmap-log": the
+// log was refused as "expected a cogmap, CARMEN or Player log line, got 'cogmap-log 1 ...'",
+// and the mark itself was invisible in the message. CRLF line ends were already read.
+TEST(LogChecks, ByteOrderMarkAndCrlfAreRead) {
+  const std::string bom = "\xef\xbb\xbf";
+  std::string crlf = bom + log_with(kHeader, "F 0.3 0.03 0 0 0 0 - 0");
+  for (std::size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2)) {
+    crlf.insert(at, "\r");
+  }
+  for (const std::string& text : {bom + log_with(kHeader, "F 0.3 0.03 0 0 0 0 - 0"), crlf}) {
+    const fs::path p = write_log("bom.log", text);
+    EXPECT_EQ(detect_log_format(p), LogFormat::kCogmap);
+    LogRobot robot(p);
+    EXPECT_EQ(robot.frame_count(), 4u);
+    EXPECT_EQ(robot.geometry().sonars.size(), 2u);
+  }
+  const fs::path carmen =
+      write_log("bom.carmen.log",
+                bom + "# CARMEN log\nODOM 0 0 0 0 0 0 100.0 h 0\nODOM 0.05 0 0 0 0 0 100.1 h 0\n");
+  EXPECT_EQ(detect_log_format(carmen), LogFormat::kCarmen);
+  EXPECT_EQ(import_carmen_log(carmen).frames.size(), 2u);
+  const fs::path player =
+      write_log("bom.player.log", bom +
+                                      "## Player version 2.0.5\n"
+                                      "1.0 h 6665 position2d 00 001 001 0 0 0 0 0 0 0\n"
+                                      "1.1 h 6665 position2d 00 001 001 0.05 0 0 0 0 0 0\n");
+  EXPECT_EQ(detect_log_format(player), LogFormat::kPlayer);
+  EXPECT_EQ(import_player_log(player).frames.size(), 2u);
+}
+
+std::string any_error(const std::function<void()>& read) {
+  try {
+    read();
+  } catch (const LogError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// Logs are shipped compressed (CARMEN logs as .log.gz): each reader said "expected a cogmap,
+// CARMEN or Player log line, got '" and the compressed bytes, raw, up to a NUL that ended the
+// message. Now the file is named for what it is.
+TEST(LogChecks, CompressedOrUtf16LogsSayWhatTheyAre) {
+  const std::pair<std::string, std::string> cases[] = {
+      {std::string("\x1f\x8b\x08\x08\x00\x00\x00\x00", 8), "gzip-compressed: decompress it first"},
+      {"BZh91AY&SY", "bzip2-compressed"},
+      {std::string("\xfd"
+                   "7zXZ\0\0\x04",
+                   8),
+       "xz-compressed"},
+      {std::string("\xff\xfe"
+                   "c\0o\0g\0",
+                   8),
+       "UTF-16 text"},
+  };
+  for (const auto& [bytes, what] : cases) {
+    const fs::path p = write_log("packed.log", bytes + std::string(100, '\x01'));
+    for (const auto& read : std::vector<std::function<void()>>{
+             [&] { (void)detect_log_format(p); }, [&] { LogRobot robot(p); },
+             [&] { (void)import_carmen_log(p); }, [&] { (void)import_player_log(p); }}) {
+      const std::string e = any_error(read);
+      EXPECT_NE(e.find("packed.log: not a text log: " + what), std::string::npos) << e;
+    }
+  }
+}
+
+// Whatever a line holds, the message quoting it is printable and short: bytes outside printable
+// ASCII as \xNN (a NUL ended the message, binary reached the terminal), at most 80 of them.
+TEST(LogChecks, MessagesQuoteBinaryEscapedAndShort) {
+  const std::string binary =
+      std::string("F\x01\x1b[2J", 6) + std::string(1, '\0') + "\xc3" + std::string(5000, 'z');
+  std::string e = error_of(log_with(kHeader, "F 0.3 0.03 0 0 0 0 - 0") + binary + "\n");
+  EXPECT_EQ(e, "l.log:6: expected a line type F, C or S, got 'F\\x01\\x1b[2J\\x00\\xc3" +
+                   std::string(72, 'z') + "... (5008 bytes)'");
+  const fs::path p = write_log("binary.carmen.log",
+                               "ODOM 0 0 0 0 0 0 100.0 h 0\nODOM \x01\x02 0 0 0 0 0 100.1 h 0\n");
+  EXPECT_NE(any_error([&] {
+              (void)import_carmen_log(p);
+            }).find("binary.carmen.log:2: expected x at field 2, got '\\x01\\x02'"),
+            std::string::npos);
+}
+
+// A file whose last blocks were allocated but never written ends in NUL bytes (power lost while
+// recording): said as such, not quoted as a line type.
+TEST(LogChecks, NulTailSaysTheEndWasNeverWritten) {
+  EXPECT_EQ(error_of(log_with(kHeader, "F 0.3 0.03 0 0 0 0 - 0") + std::string(4096, '\0')),
+            "l.log:6: 4096 NUL bytes instead of a line: the end of the file was never written "
+            "(power lost or disk full while recording?); the lines before it are whole, cut the "
+            "file there to use them");
+}
+
+// The writer flushes whole lines, so a last line without its newline was cut while being
+// written: the message says so.
+TEST(LogChecks, LastLineCutShortSaysSo) {
+  const std::string whole = log_with(kHeader, "F 0.3 0.03 0 0 0 0 - 0");
+  const std::string note =
+      " (the last line, cut short: no newline ends it, so the recording stopped while writing "
+      "it; the lines before it are whole: delete this one to replay them)";
+  EXPECT_EQ(error_of(whole + "F 0.5 0.05 0 0 0 0 - 2 0,1.5,1,0.5 1,2.2"),
+            "l.log:6: expected reading index,range_m,echo,time_s (2 of 2), got '1,2.2'" + note);
+  EXPECT_EQ(error_of(whole + "F 0.5 0.0"),
+            "l.log:6: expected odometry y_m, got 'end of line'" + note);
+  // A malformed line that is not the last, or a last line that parses, is as before.
+  EXPECT_EQ(error_of(whole + "F 0.5 0.05 0 0 0 0 - 2\nF 0.6 0.06 0 0 0 0 - 0\n"),
+            "l.log:6: expected reading index,range_m,echo,time_s (1 of 2), got 'end of line'");
+  EXPECT_EQ(error_of(whole + "F 0.5 0.05 0 0 0 0 - 0"), "");
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ class Fields {
   [[noreturn]] void fail(const std::string& expected, std::size_t i) const {
     throw LogError(file_.string() + ":" + std::to_string(line_) + ": expected " + expected +
                    " at field " + std::to_string(i + 1) + ", got '" +
-                   (i < tokens_.size() ? tokens_[i] : std::string("end of line")) + "'");
+                   (i < tokens_.size() ? detail::printable(tokens_[i]) : "end of line") + "'");
   }
   std::size_t size() const { return tokens_.size(); }
   const std::string& at(std::size_t i) const { return tokens_[i]; }
@@ -262,8 +262,8 @@ LogFormat detect_log_format(const std::filesystem::path& path) {
       return LogFormat::kPlayer;
     }
     throw LogError(path.string() + ":" + std::to_string(line_no) +
-                   ": expected a cogmap, CARMEN or Player log line, got '" + text.substr(0, 60) +
-                   "'");
+                   ": expected a cogmap, CARMEN or Player log line, got '" +
+                   detail::printable(text, 60) + "'");
   }
   throw LogError(path.string() + ": empty log (no frame lines)");
 }

@@ -42,7 +42,7 @@ class LineParser {
 
   [[noreturn]] void fail(const std::string& expected, const std::string& got) const {
     throw LogError(file_.string() + ":" + std::to_string(line_) + ": expected " + expected +
-                   ", got '" + got + "'");
+                   ", got '" + detail::printable(got) + "'");
   }
   bool done() const { return pos_ >= tokens_.size(); }
   std::string word(const std::string& what) {
@@ -180,60 +180,74 @@ LogReader::LogReader(const std::filesystem::path& path, const LogLimits& limits)
                  ": expected a cogmap log header 'cogmap-log 1 ...', got end of file");
 }
 
+std::variant<mapper::SensorFrame, LoggedCommand> LogReader::parse_line(const std::string& text) {
+  LineParser p(path_, line_no_, text);
+  const std::string kind = p.word("a line type F, C or S");
+  if (kind == "F") {
+    mapper::SensorFrame f;
+    f.time_s = p.number("time_s");
+    f.odometry.x_m = p.number("odometry x_m");
+    f.odometry.y_m = p.number("odometry y_m");
+    f.odometry.theta_rad = p.number("odometry theta_rad");
+    f.stall_left = p.flag("stall_left");
+    f.stall_right = p.flag("stall_right");
+    const std::string truth = p.word("true pose x,y,theta or '-'");
+    if (truth != "-") {
+      const auto t = p.fields(truth, 3, "true pose x_m,y_m,theta_rad or '-'");
+      f.true_pose = mapper::Pose2{p.to_number(t[0], "true x_m"), p.to_number(t[1], "true y_m"),
+                                  p.to_number(t[2], "true theta_rad")};
+    }
+    const long n = p.integer("reading count", 0, 4096);
+    for (long i = 0; i < n; ++i) {
+      const std::string what = "reading index,range_m,echo,time_s (" + std::to_string(i + 1) +
+                               " of " + std::to_string(n) + ")";
+      const std::string token = p.word(what);
+      const auto r = p.fields(token, 4, what);
+      mapper::SonarReading reading;
+      reading.index = static_cast<int>(
+          p.to_integer(r[0], "sonar index", 0, static_cast<long>(geometry_.sonars.size()) - 1));
+      reading.range_m = p.to_number(r[1], "range_m");
+      reading.echo = p.to_integer(r[2], "echo (0 or 1)", 0, 1) == 1;
+      reading.time_s = p.to_number(r[3], "reading time_s");
+      f.sonar.push_back(reading);
+    }
+    p.end();
+    detail::check_frame(f, previous_ ? &*previous_ : nullptr, geometry_, limits_,
+                        path_.string() + ":" + std::to_string(line_no_));
+    previous_ = f;
+    previous_->sonar.clear();  // only time and pose are compared
+    return f;
+  }
+  if (kind == "C" || kind == "S") {
+    LoggedCommand c;
+    c.time_s = p.number("time_s");
+    c.stop = kind == "S";
+    if (!c.stop) {
+      c.cmd.v_mps = p.number("v_mps");
+      c.cmd.w_radps = p.number("w_radps");
+    }
+    p.end();
+    return c;
+  }
+  p.fail("a line type F, C or S", kind);
+}
+
 std::optional<std::variant<mapper::SensorFrame, LoggedCommand>> LogReader::next() {
   std::string text;
   while (detail::read_bounded_line(in_, text, path_, line_no_ + 1, limits_)) {
     ++line_no_;
     if (text.empty() || text[0] == '#' || text == "\r") continue;
-    LineParser p(path_, line_no_, text);
-    const std::string kind = p.word("a line type F, C or S");
-    if (kind == "F") {
-      mapper::SensorFrame f;
-      f.time_s = p.number("time_s");
-      f.odometry.x_m = p.number("odometry x_m");
-      f.odometry.y_m = p.number("odometry y_m");
-      f.odometry.theta_rad = p.number("odometry theta_rad");
-      f.stall_left = p.flag("stall_left");
-      f.stall_right = p.flag("stall_right");
-      const std::string truth = p.word("true pose x,y,theta or '-'");
-      if (truth != "-") {
-        const auto t = p.fields(truth, 3, "true pose x_m,y_m,theta_rad or '-'");
-        f.true_pose = mapper::Pose2{p.to_number(t[0], "true x_m"), p.to_number(t[1], "true y_m"),
-                                    p.to_number(t[2], "true theta_rad")};
-      }
-      const long n = p.integer("reading count", 0, 4096);
-      for (long i = 0; i < n; ++i) {
-        const std::string what = "reading index,range_m,echo,time_s (" + std::to_string(i + 1) +
-                                 " of " + std::to_string(n) + ")";
-        const std::string token = p.word(what);
-        const auto r = p.fields(token, 4, what);
-        mapper::SonarReading reading;
-        reading.index = static_cast<int>(
-            p.to_integer(r[0], "sonar index", 0, static_cast<long>(geometry_.sonars.size()) - 1));
-        reading.range_m = p.to_number(r[1], "range_m");
-        reading.echo = p.to_integer(r[2], "echo (0 or 1)", 0, 1) == 1;
-        reading.time_s = p.to_number(r[3], "reading time_s");
-        f.sonar.push_back(reading);
-      }
-      p.end();
-      detail::check_frame(f, previous_ ? &*previous_ : nullptr, geometry_, limits_,
-                          path_.string() + ":" + std::to_string(line_no_));
-      previous_ = f;
-      previous_->sonar.clear();  // only time and pose are compared
-      return f;
+    try {
+      return parse_line(text);
+    } catch (const LogError& e) {
+      // The writer ends every line with a newline and flushes it, so a last line without one
+      // was cut short by a crash, a kill or a full disk while it was written.
+      if (!in_.eof()) throw;
+      throw LogError(std::string(e.what()) +
+                     " (the last line, cut short: no newline ends it, so the recording stopped "
+                     "while writing it; the lines before it are whole: delete this one to "
+                     "replay them)");
     }
-    if (kind == "C" || kind == "S") {
-      LoggedCommand c;
-      c.time_s = p.number("time_s");
-      c.stop = kind == "S";
-      if (!c.stop) {
-        c.cmd.v_mps = p.number("v_mps");
-        c.cmd.w_radps = p.number("w_radps");
-      }
-      p.end();
-      return c;
-    }
-    p.fail("a line type F, C or S", kind);
   }
   if (in_.bad())
     throw LogError(path_.string() + ": read error after line " + std::to_string(line_no_));

@@ -184,4 +184,28 @@ TEST(BagReplay, OdometryBeyondTheLogLimitsExitsTwoAndWritesNothing) {
   }
 }
 
+// Sonar and odometry stamped by two clocks (an hour apart): no reading has a pose. It was "0
+// rooms", exit 0, and a run directory of empty files; now exit 2 before anything is written.
+TEST(BagReplay, SonarAndOdometryThatNeverOverlapExitTwoAndWriteNothing) {
+  const fs::path dir = work_dir("two_clocks");
+  const fs::path bag = dir / "two_clocks.bag";
+  {
+    cogmap::hw::bag::testing::TestBagWriter w(bag.string());
+    for (int k = 0; k < 20; ++k) {
+      const double t = 1.7e9 + 0.1 * k;
+      w.odometry("/RosAria/pose", t, 0.01 * k, 0.0, 0.0);
+      w.point_cloud("/RosAria/sonar", t - 3600.0, {{1.0, 1.0 + 0.01 * k}}, t);
+    }
+  }
+  const fs::path run = dir / "run";
+  const CliRun r =
+      cli("replay " + bag.string() + " --robot p3dx --out " + run.string(), dir / "cli.txt");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(bag.string() + ": the header stamps of /RosAria/sonar ("),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("nothing to map"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(run));
+}
+
 }  // namespace

@@ -29,7 +29,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sweep_merge_cwd_results sweep_merge_dev_zero sweep_resume_own_directory
   drive_record_is_the_experiment drive_record_exists drive_duration_nan
   sweep_vary_missing_world sweep_vary_unknown_key sweep_merge_negative_run sweep_merge_text_run
-  experiment_empty_value)
+  experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -355,6 +355,23 @@ PY
       printf 'name: e\nworld: %s/two_rooms.yaml\nduration_s:\nrobot: {source: sim}\n' "$W" >"$d/e.yaml"
       cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
       want_text="e.yaml:3: duration_s: expected a number" ;;
+    log_gzipped)  # "expected a cogmap, CARMEN or Player log line, got '" and raw gzip bytes
+      good_log | gzip >"$d/l.log.gz"
+      cmd=("$cogmap" replay "$d/l.log.gz" --out "$d/run"); want_rc=2
+      want_text="l.log.gz: not a text log: gzip-compressed: decompress it first (gunzip -k FILE)"
+      check() { [[ ! -e $d/run ]]; } ;;
+    log_bom_crlf)  # a Windows editor's byte order mark: refused as "got 'cogmap-log 1 ...'"
+      { printf '\xef\xbb\xbf'; good_log | sed 's/$/\r/'; } >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run" --no-figures); want_rc=0
+      want_text="outputs in $d/run" ;;
+    log_nul_tail)  # power lost while recording: the message stopped at the first NUL
+      { good_log; head -c 4096 /dev/zero; } >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:11: 4096 NUL bytes instead of a line: the end of the file was never written" ;;
+    log_cut_mid_line)  # the recording killed while writing its last line
+      { good_log; printf 'F 1.0 0.10 0 0 0 0 - 1 0,1.'; } >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:11: expected reading index,range_m,echo,time_s (1 of 1), got '0,1.' (the last line, cut short" ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

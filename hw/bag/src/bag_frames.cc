@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -69,6 +70,26 @@ void check_stamps(const std::vector<Message>& messages, const std::string& topic
   }
 }
 
+std::string span(double first_s, double last_s) {
+  return std::to_string(first_s) + " .. " + std::to_string(last_s) + " s";
+}
+
+// A bag whose sonar and odometry were stamped by different clocks (a driver that stamps one
+// with the robot's uptime, a sonar recorded from another machine) has no reading with a pose:
+// it used to become 0 frames, "0 rooms" and exit 0 (and, clocks decades apart, a time_s limit
+// error on the first pose). Said as what it is, like a log without frames.
+void check_overlap(const Streams& streams, const StreamRequest& request) {
+  const double s0 = streams.sonar.front().stamp_s, s1 = streams.sonar.back().stamp_s;
+  const double p0 = streams.poses.front().stamp_s, p1 = streams.poses.back().stamp_s;
+  if (s1 < p0 || s0 > p1) {
+    throw std::runtime_error("the header stamps of " + request.sonar_topic + " (" + span(s0, s1) +
+                             ") and of " + request.odometry_topic + " (" + span(p0, p1) +
+                             ") never overlap: the two topics were stamped by different clocks "
+                             "(or the bag holds only part of one), so no sonar reading has a "
+                             "pose: nothing to map");
+  }
+}
+
 // Odometry at a time: linear in position, shortest way round in heading.
 std::optional<mapper::Pose2> odometry_at(const std::vector<PoseMessage>& poses, double t) {
   if (poses.empty() || t < poses.front().stamp_s || t > poses.back().stamp_s) return std::nullopt;
@@ -105,6 +126,7 @@ void build_frames(const Streams& streams, const StreamRequest& request,
                                        " has no odom -> base_link transform"
                                  : "topic " + request.odometry_topic + " is empty");
   }
+  check_overlap(streams, request);
   const double t0 = std::min(streams.sonar.front().stamp_s, streams.poses.front().stamp_s);
   check_odometry(streams.poses, t0, request.odometry_topic, geometry);
   const bool ranges = request.sonar == SonarEncoding::kSonarArray;
@@ -160,6 +182,16 @@ void build_frames(const Streams& streams, const StreamRequest& request,
     check_like_a_log(frame, out.frames.empty() ? nullptr : &out.frames.back(), geometry,
                      message_name(request.sonar_topic, m.index));
     out.frames.push_back(std::move(frame));
+  }
+  if (out.frames.empty()) {
+    std::ostringstream gap_s;
+    gap_s << kMaxOdometryGapS;
+    throw std::runtime_error("no message of " + request.sonar_topic +
+                             " has a pose: each lies outside the odometry of " +
+                             request.odometry_topic + " (" +
+                             span(streams.poses.front().stamp_s, streams.poses.back().stamp_s) +
+                             ") or in a gap of more than " + gap_s.str() +
+                             " s between two of its poses: nothing to map");
   }
   stats.frames = out.frames.size();
 }

@@ -21,7 +21,8 @@ inline constexpr double kMaxOdometryGapS = 0.5;
 /// earlier than the one before on the same topic, a non-finite value, more transducers than
 /// `geometry` has, or an odometry sample or frame that fails the checks every log gets
 /// (log_checks.h: |x|, |y| within LogLimits::max_coordinate_m, no jump beyond what
-/// `geometry.max_speed_mps` allows).
+/// `geometry.max_speed_mps` allows); and "...: nothing to map" when no sonar message has a
+/// pose (the two topics' stamps never overlap, or every message falls in an odometry gap).
 void build_frames(const Streams& streams, const StreamRequest& request,
                   const mapper::RobotGeometry& geometry, ImportedLog& out, BagImportStats& stats);
 

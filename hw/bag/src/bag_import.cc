@@ -25,7 +25,8 @@ ImportedBag import_ros_bag(const std::filesystem::path& path, const BagImportOpt
       throw std::runtime_error("unknown robot model '" + options.robot + "' (one of " +
                                mapper::robot_model_names() + ")");
     }
-    const bag::BagContents contents = bag::read_bag_isolated(file, options);
+    const bag::BagContents contents =
+        bag::read_bag_isolated(file, options, model->geometry.sonars.size());
     const bag::TopicChoice& choice = contents.choice;
     const bag::Streams& streams = contents.streams;
     ImportedBag result;

@@ -151,11 +151,12 @@ void write_all(int fd, const std::string& bytes) {
 }
 
 [[noreturn]] void child(int fd, Progress* progress, const std::string& path,
-                        const BagImportOptions& options) {
+                        const BagImportOptions& options, std::size_t max_transducers) {
   std::string reply;
   try {
     BagContents c;
     c.choice = choose_topics(list_topics(path), options);
+    c.choice.request.max_transducers = max_transducers;
     c.streams =
         read_streams(path, c.choice.request, [progress](const std::string& t, std::size_t i) {
           std::strncpy(progress->topic, t.c_str(), sizeof progress->topic - 1);
@@ -181,7 +182,8 @@ void write_all(int fd, const std::string& bytes) {
 
 }  // namespace
 
-BagContents read_bag_isolated(const std::string& path, const BagImportOptions& options) {
+BagContents read_bag_isolated(const std::string& path, const BagImportOptions& options,
+                              std::size_t max_transducers) {
   void* shared =
       ::mmap(nullptr, sizeof(Progress), PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (shared == MAP_FAILED) throw std::runtime_error("bag reader: mmap failed");
@@ -200,7 +202,7 @@ BagContents read_bag_isolated(const std::string& path, const BagImportOptions& o
   }
   if (pid == 0) {
     ::close(fds[0]);
-    child(fds[1], progress, path, options);
+    child(fds[1], progress, path, options, max_transducers);
   }
   ::close(fds[1]);
   std::string reply;

@@ -4,6 +4,7 @@
 // child process; a crash there becomes an error naming the topic and message it was reading,
 // and the parent never sees half a result. Call it before the process starts other threads.
 
+#include <cstddef>
 #include <string>
 
 #include "bag_topics.h"
@@ -18,9 +19,12 @@ struct BagContents {
   Streams streams;
 };
 
-/// Lists the topics, chooses them (choose_topics) and reads both streams, in a child process.
-/// Throws std::runtime_error with the child's message (BagReadError's or choose_topics'), or
-/// "topic T, message K: the ROS bag library crashed (signal N) ..." when the child died.
-BagContents read_bag_isolated(const std::string& path, const BagImportOptions& options);
+/// Lists the topics, chooses them (choose_topics) and reads both streams, in a child process;
+/// a sonar message of more than `max_transducers` values (the robot model's sonars) ends the
+/// reading there. Throws std::runtime_error with the child's message (BagReadError's or
+/// choose_topics'), or "topic T, message K: the ROS bag library crashed (signal N) ..." when
+/// the child died.
+BagContents read_bag_isolated(const std::string& path, const BagImportOptions& options,
+                              std::size_t max_transducers);
 
 }  // namespace cogmap::hw::bag

@@ -14,7 +14,7 @@
 namespace cogmap::hw::bag::plugin {
 
 /// Raise when a signature below or a struct of ros_bag_reader.h changes.
-inline constexpr int kRosBagApiVersion = 1;
+inline constexpr int kRosBagApiVersion = 2;  // 2: StreamRequest::max_transducers
 
 /// The plugin's one exported symbol: `const RosBagApi* cogmap_ros_bag_api()`.
 inline constexpr const char* kEntryPoint = "cogmap_ros_bag_api";

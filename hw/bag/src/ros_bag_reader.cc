@@ -27,6 +27,13 @@ void open_bag(rosbag::Bag& bag, const std::string& path) {
   console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);
   try {
     bag.open(path, rosbag::bagmode::Read);
+  } catch (const rosbag::BagUnindexedException&) {
+    // What `rosbag record` leaves when it is killed (FILE.bag.active): the chunks are there,
+    // the index it writes on closing is not.
+    throw BagReadError(
+        "not a readable ROS 1 bag: it has no index (its recording was not closed: rosbag record "
+        "killed, or a .bag.active file); rebuild the index with ROS's `rosbag reindex` and "
+        "replay the result");
   } catch (const std::exception& e) {
     throw BagReadError(std::string("not a readable ROS 1 bag: ") + e.what());
   }
@@ -43,7 +50,9 @@ double yaw_of(const geometry_msgs::Quaternion& q) {
     throw BagReadError("orientation quaternion has norm " + std::to_string(std::sqrt(n2)) +
                        " (expected 1)");
   }
-  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  // w² + x² - y² - z² rather than 1 - 2(y² + z²): equal for a unit quaternion, and unlike it
+  // the same yaw for any length (a quaternion 5 % long turned 90° into 95°).
+  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), q.w * q.w + q.x * q.x - q.y * q.y - q.z * q.z);
 }
 
 void check_finite(double v, const char* what) {
@@ -67,7 +76,19 @@ double read_float(const std::uint8_t* p, std::uint8_t datatype) {
   return d;
 }
 
-SonarMessage from_cloud2(const sensor_msgs::PointCloud2& c) {
+// A message of more values than the robot has sonars is refused as soon as it is read, not
+// after the whole topic: a camera's or a lidar's cloud chosen as the sonar topic is hundreds of
+// thousands of points a message, and a few minutes of it filled gigabytes before the count was
+// checked.
+void check_transducers(std::uint64_t n, std::size_t max_transducers) {
+  if (max_transducers > 0 && n > max_transducers) {
+    throw BagReadError(std::to_string(n) + " transducers, but the robot model has " +
+                       std::to_string(max_transducers) + " sonars: pass the right --robot" +
+                       (n > 64 ? " (or --sonar-topic: a cloud this large is no sonar ring)" : ""));
+  }
+}
+
+SonarMessage from_cloud2(const sensor_msgs::PointCloud2& c, std::size_t max_transducers) {
   const sensor_msgs::PointField* fx = nullptr;
   const sensor_msgs::PointField* fy = nullptr;
   for (const auto& f : c.fields) {
@@ -97,6 +118,7 @@ SonarMessage from_cloud2(const sensor_msgs::PointCloud2& c) {
                        std::to_string(n * c.point_step) + " bytes, has " +
                        std::to_string(c.data.size()));
   }
+  check_transducers(n, max_transducers);
   SonarMessage out;
   out.stamp_s = c.header.stamp.toSec();
   for (std::uint64_t i = 0; i < n; ++i) {
@@ -118,10 +140,11 @@ boost::shared_ptr<T> instantiate(const rosbag::MessageInstance& m) {
   return msg;
 }
 
-SonarMessage read_sonar(const rosbag::MessageInstance& m, SonarEncoding encoding) {
-  switch (encoding) {
+SonarMessage read_sonar(const rosbag::MessageInstance& m, const StreamRequest& request) {
+  switch (request.sonar) {
     case SonarEncoding::kPointCloud: {
       const auto cloud = instantiate<sensor_msgs::PointCloud>(m);
+      check_transducers(cloud->points.size(), request.max_transducers);
       SonarMessage out;
       out.stamp_s = cloud->header.stamp.toSec();
       for (const auto& p : cloud->points) {
@@ -131,7 +154,7 @@ SonarMessage read_sonar(const rosbag::MessageInstance& m, SonarEncoding encoding
       return out;
     }
     case SonarEncoding::kPointCloud2:
-      return from_cloud2(*instantiate<sensor_msgs::PointCloud2>(m));
+      return from_cloud2(*instantiate<sensor_msgs::PointCloud2>(m), request.max_transducers);
     case SonarEncoding::kSonarArray: {
       if (m.getDataType() != kSonarArrayType) {
         throw BagReadError("is " + m.getDataType() + ", expected " + kSonarArrayType);
@@ -141,6 +164,7 @@ SonarMessage read_sonar(const rosbag::MessageInstance& m, SonarEncoding encoding
       ros::serialization::OStream stream(bytes.data(), static_cast<std::uint32_t>(bytes.size()));
       m.write(stream);
       SonarArrayData data = decode_sonar_array(bytes.data(), bytes.size());
+      check_transducers(data.ranges_m.size(), request.max_transducers);
       SonarMessage out;
       out.stamp_s = data.stamp_s;
       out.ranges_m = std::move(data.ranges_m);
@@ -161,9 +185,11 @@ PoseMessage pose_of(double stamp_s, double x, double y, const geometry_msgs::Qua
   return p;
 }
 
-void read_tf(const rosbag::MessageInstance& m, std::size_t index, Streams& out) {
+// True when the message held the odom -> base_link pair.
+bool read_tf(const rosbag::MessageInstance& m, std::size_t index, Streams& out) {
   const auto tf = instantiate<tf2_msgs::TFMessage>(m);
   ++out.tf_messages;
+  bool found = false;
   for (const auto& t : tf->transforms) {
     const std::string parent = last_segment(t.header.frame_id);
     const std::string child = last_segment(t.child_frame_id);
@@ -179,8 +205,35 @@ void read_tf(const rosbag::MessageInstance& m, std::size_t index, Streams& out) 
     PoseMessage p = pose_of(t.header.stamp.toSec(), tr.x, tr.y, t.transform.rotation);
     p.index = index;
     out.poses.push_back(p);
+    found = true;
   }
+  return found;
 }
+
+// The odometry must be one robot's: two publishers taking turns on it (a driver and an EKF
+// that both broadcast odom -> base_link, a classic misconfiguration) gave a pose stream that
+// alternates between two estimates, interpolated into frames without a word. One publisher
+// after another (a driver restarted mid-recording) is one stream.
+class OnePublisher {
+ public:
+  void check(const std::string& callerid) {
+    if (callerid.empty() || callerid == current_) return;  // empty: a bag without headers
+    for (const std::string& p : earlier_) {
+      if (p == callerid) {
+        throw BagReadError("the odometry comes from two publishers taking turns (" + current_ +
+                           " and " + callerid +
+                           "): two estimates of the robot's pose in one stream; record (or "
+                           "choose with --odom-topic) a topic that only one of them publishes");
+      }
+    }
+    if (!current_.empty()) earlier_.push_back(current_);
+    current_ = callerid;
+  }
+
+ private:
+  std::string current_;
+  std::vector<std::string> earlier_;
+};
 
 }  // namespace
 
@@ -217,6 +270,7 @@ Streams read_streams(const std::string& path, const StreamRequest& request,
   std::size_t sonar_index = 0, odometry_index = 0;
   std::string topic = request.sonar_topic;
   std::size_t index = 0;
+  OnePublisher odometry_publisher;
   try {
     rosbag::View view(bag, rosbag::TopicQuery({request.sonar_topic, request.odometry_topic}));
     for (auto it = view.begin(); it != view.end(); ++it) {
@@ -226,14 +280,15 @@ Streams read_streams(const std::string& path, const StreamRequest& request,
       if (on_message) on_message(topic, index);
       if (topic == request.sonar_topic) {
         ++sonar_index;
-        SonarMessage s = read_sonar(m, request.sonar);
+        SonarMessage s = read_sonar(m, request);
         s.index = index;
         out.sonar.push_back(std::move(s));
       } else {
         ++odometry_index;
         if (request.odometry == OdometryEncoding::kTf) {
-          read_tf(m, index, out);
+          if (read_tf(m, index, out)) odometry_publisher.check(m.getCallerId());
         } else {
+          odometry_publisher.check(m.getCallerId());
           const auto odom = instantiate<nav_msgs::Odometry>(m);
           const auto& pose = odom->pose.pose;
           PoseMessage p = pose_of(odom->header.stamp.toSec(), pose.position.x, pose.position.y,

@@ -52,6 +52,9 @@ struct StreamRequest {
   SonarEncoding sonar = SonarEncoding::kPointCloud;
   std::string odometry_topic;
   OdometryEncoding odometry = OdometryEncoding::kOdometry;
+  /// The robot model's sonar count: a sonar message with more values is refused as it is read
+  /// (0: no bound).
+  std::size_t max_transducers = 0;
 };
 
 /// One sonar message: its header stamp and, per transducer in order, either a point (clouds,
@@ -81,7 +84,8 @@ struct Streams {
 /// Reads both topics. For kTf, a transform counts when its parent frame is `odom` and its child
 /// `base_link` or `base_footprint`, ignoring a leading '/' and any tf prefix (`robot1/odom`).
 /// Throws BagReadError naming the topic and message index for a message that does not decode
-/// (wrong type or MD5, truncated data, a SonarArray whose definition is not p2os's).
+/// (wrong type or MD5, truncated data, a SonarArray whose definition is not p2os's) or holds
+/// more than request.max_transducers values.
 /// `on_message` (optional) is called with each message's topic and index before it is decoded,
 /// so a caller can tell where a crash inside the ROS library happened.
 Streams read_streams(const std::string& path, const StreamRequest& request,

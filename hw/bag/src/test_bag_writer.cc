@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 
 namespace cogmap::hw::bag::testing {
 namespace {
@@ -131,6 +132,25 @@ namespace cogmap::hw::bag::testing {
 
 struct TestBagWriter::Impl {
   rosbag::Bag bag;
+  std::map<std::string, Publisher> publishers;
+
+  // Like rosbag record: with the publisher's connection header when one is set for the topic.
+  template <typename T>
+  void write(const std::string& topic, const ros::Time& time, const T& msg) {
+    const auto p = publishers.find(topic);
+    if (p == publishers.end()) {
+      bag.write(topic, time, msg);
+      return;
+    }
+    auto header = boost::make_shared<ros::M_string>();
+    (*header)["callerid"] = p->second.callerid;
+    (*header)["latching"] = p->second.latching ? "1" : "0";
+    (*header)["topic"] = topic;
+    (*header)["type"] = ros::message_traits::datatype(msg);
+    (*header)["md5sum"] = ros::message_traits::md5sum(msg);
+    (*header)["message_definition"] = ros::message_traits::definition(msg);
+    bag.write(topic, time, msg, header);
+  }
 };
 
 TestBagWriter::TestBagWriter(const std::string& path, Compression compression)
@@ -155,7 +175,26 @@ void TestBagWriter::odometry(const std::string& topic, double stamp_s, double x_
   o.pose.pose.position.x = x_m;
   o.pose.pose.position.y = y_m;
   o.pose.pose.orientation = yaw_quaternion(yaw_rad);
-  impl_->bag.write(topic, stamp(record_s < 0 ? stamp_s : record_s), o);
+  impl_->write(topic, stamp(record_s < 0 ? stamp_s : record_s), o);
+}
+
+void TestBagWriter::odometry_quaternion(const std::string& topic, double stamp_s, double x_m,
+                                        double y_m, double qx, double qy, double qz, double qw) {
+  nav_msgs::Odometry o;
+  o.header.stamp = stamp(stamp_s);
+  o.header.frame_id = "odom";
+  o.child_frame_id = "base_link";
+  o.pose.pose.position.x = x_m;
+  o.pose.pose.position.y = y_m;
+  o.pose.pose.orientation.x = qx;
+  o.pose.pose.orientation.y = qy;
+  o.pose.pose.orientation.z = qz;
+  o.pose.pose.orientation.w = qw;
+  impl_->write(topic, stamp(stamp_s), o);
+}
+
+void TestBagWriter::set_publisher(const std::string& topic, const Publisher& publisher) {
+  impl_->publishers[topic] = publisher;
 }
 
 void TestBagWriter::tf(const std::string& topic, double stamp_s, double x_m, double y_m,
@@ -169,7 +208,7 @@ void TestBagWriter::tf(const std::string& topic, double stamp_s, double x_m, dou
   t.transform.translation.y = y_m;
   t.transform.rotation = yaw_quaternion(yaw_rad);
   m.transforms.push_back(t);
-  impl_->bag.write(topic, stamp(stamp_s), m);
+  impl_->write(topic, stamp(stamp_s), m);
 }
 
 void TestBagWriter::point_cloud(const std::string& topic, double stamp_s,
@@ -183,7 +222,7 @@ void TestBagWriter::point_cloud(const std::string& topic, double stamp_s,
     q.y = static_cast<float>(p.y_m);
     c.points.push_back(q);
   }
-  impl_->bag.write(topic, stamp(record_s < 0 ? stamp_s : record_s), c);
+  impl_->write(topic, stamp(record_s < 0 ? stamp_s : record_s), c);
 }
 
 void TestBagWriter::point_cloud2(const std::string& topic, double stamp_s,
@@ -211,7 +250,7 @@ void TestBagWriter::point_cloud2(const std::string& topic, double stamp_s,
                           0.0f};
     std::memcpy(c.data.data() + i * 12, xyz, sizeof xyz);
   }
-  impl_->bag.write(topic, stamp(stamp_s), c);
+  impl_->write(topic, stamp(stamp_s), c);
 }
 
 void TestBagWriter::sonar_array(const std::string& topic, double stamp_s,
@@ -221,7 +260,7 @@ void TestBagWriter::sonar_array(const std::string& topic, double stamp_s,
     m.header.frame_id = "sonar";
     m.ranges_count = static_cast<std::int32_t>(ranges_m.size());
     m.ranges = ranges_m;
-    impl_->bag.write(topic, stamp(stamp_s), m);
+    impl_->write(topic, stamp(stamp_s), m);
   };
   switch (variant) {
     case SonarArrayVariant::kGood: {
@@ -245,7 +284,7 @@ void TestBagWriter::sonar_array(const std::string& topic, double stamp_s,
 void TestBagWriter::truncated_point_cloud(const std::string& topic, double stamp_s) {
   ShortPointCloud m;
   m.header.stamp = stamp(stamp_s);
-  impl_->bag.write(topic, stamp(stamp_s), m);
+  impl_->write(topic, stamp(stamp_s), m);
 }
 
 }  // namespace cogmap::hw::bag::testing

@@ -23,6 +23,14 @@ enum class SonarArrayVariant {
 /// Chunk compression, as `rosbag record --bz2 / --lz4` writes it.
 enum class Compression { kNone, kBz2, kLz4 };
 
+/// The publisher a topic's next messages come from, as `rosbag record` stores it in the
+/// connection header. rosbag keeps one connection per topic and header, so another callerid (a
+/// driver restarted mid-recording, a second publisher) is a second connection on the topic.
+struct Publisher {
+  std::string callerid = "/RosAria";
+  bool latching = false;
+};
+
 /// Writes one bag; closed by close() or the destructor.
 class TestBagWriter {
  public:
@@ -33,6 +41,11 @@ class TestBagWriter {
   /// unless `record_s` (the bag's receive time) is given.
   void odometry(const std::string& topic, double stamp_s, double x_m, double y_m, double yaw_rad,
                 double record_s = -1.0);
+  /// nav_msgs/Odometry with the orientation quaternion as given (not necessarily unit length).
+  void odometry_quaternion(const std::string& topic, double stamp_s, double x_m, double y_m,
+                           double qx, double qy, double qz, double qw);
+  /// From now on, messages on `topic` are written with `publisher`'s connection header.
+  void set_publisher(const std::string& topic, const Publisher& publisher);
   /// tf2_msgs/TFMessage with one transform parent -> child.
   void tf(const std::string& topic, double stamp_s, double x_m, double y_m, double yaw_rad,
           const std::string& parent = "odom", const std::string& child = "base_link");

@@ -50,8 +50,9 @@ struct ImportedBag {
 /// ambiguous) sonar or odometry topic, a topic of the wrong type, an unknown or missing robot
 /// model, and "FILE: topic T, message K: ..." for a message that does not decode, a header
 /// stamp going backwards or unset, more transducers than the model has, or an odometry sample
-/// or frame outside the limits every log has (LogLimits: coordinates, odometry jumps). Nothing
-/// is returned in part.
+/// or frame outside the limits every log has (LogLimits: coordinates, odometry jumps); and
+/// "FILE: ...: nothing to map" when no sonar message has a pose (stamps of the two topics that
+/// never overlap). Nothing is returned in part.
 ImportedBag import_ros_bag(const std::filesystem::path& path, const BagImportOptions& options);
 
 /// True when the file starts with the ROS 1 bag magic "#ROSBAG V2.0".

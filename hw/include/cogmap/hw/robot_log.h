@@ -69,7 +69,8 @@ class LogReader {
   const mapper::RobotGeometry& geometry() const { return geometry_; }
 
   /// The next frame or command; empty at end of file. Throws LogError for a malformed line, a
-  /// number that is not finite, time going backwards or an odometry jump beyond `limits`.
+  /// number that is not finite, time going backwards or an odometry jump beyond `limits`; for
+  /// a last line without its newline (a recording cut off mid-line) the message says so.
   std::optional<std::variant<mapper::SensorFrame, LoggedCommand>> next();
 
   /// The line number of the last line read (1-based).
@@ -82,6 +83,8 @@ class LogReader {
   LogLimits limits_;
   mapper::RobotGeometry geometry_;
   std::optional<mapper::SensorFrame> previous_;  // the last frame, for the sequence checks
+
+  std::variant<mapper::SensorFrame, LoggedCommand> parse_line(const std::string& text);
 };
 
 /// Appends lines to a log file, flushing after each so a crash loses at most one line.
