@@ -12,6 +12,7 @@
    experiments' duration_s is 90 s for every 25 m^2 of each room's floor (at least 90 s a room;
    a corridor counts once), from the wall lines.
 3. A range a door cannot fit in (A < 3 m) is refused with exit 2, naming the option.
+4. An --out whose name is not UTF-8 works, and the same command twice leaves the same files.
 Prints what failed and exits 1, or exits 0.
 """
 import glob
@@ -151,6 +152,23 @@ r = gen("block --rows 2 --cols 2 --room-sizes-m 2-4".split(), os.path.join(WORK,
 check(r.returncode == 2 and re.search(r"--room-sizes-m.*'2-4'", r.stderr) is not None,
       f"--room-sizes-m 2-4: exit {r.returncode}, {r.stderr!r}")
 check(not os.path.exists(os.path.join(WORK, "never")), "--room-sizes-m 2-4 wrote a building")
+
+# 4. An --out whose name is not UTF-8 (the command line written into each file's first line
+#    raised UnicodeEncodeError, a traceback and a half-written world), made twice: the same
+#    command again leaves the identical files as they are.
+odd = os.path.join(os.fsencode(WORK), b"odd_\xff")
+for attempt in (1, 2):
+    r = subprocess.run([sys.executable, GEN, "block", "--rows", "2", "--cols", "2", "--out", odd],
+                       capture_output=True, text=True, errors="replace")
+    check(r.returncode == 0, f"--out odd_\\xff (call {attempt}): exit {r.returncode}: {r.stderr}")
+world = os.path.join(odd, b"block_2x2_s1.world.yaml")
+if os.path.exists(world):
+    with open(world, "rb") as f:
+        first = f.readline()
+    check(first.decode("utf-8", "replace") == first.decode("utf-8", "ignore") and
+          b"odd_\\xff" in first, f"--out odd_\\xff: first line {first!r}")
+else:
+    check(False, "--out odd_\\xff: no world written")
 
 for f in failures:
     print("FAIL:", f)
