@@ -59,10 +59,16 @@ std::pair<std::string, std::string> split_host_port(const std::string& host_port
   if (host.size() > 2 && host.front() == '[' && host.back() == ']') {
     host = host.substr(1, host.size() - 2);
   }
+  // Digits only, 0-65535, checked digit by digit: std::stol threw std::out_of_range for
+  // 99999999999999999999, an "internal error" in `drive` and std::terminate in `serve`.
+  long value = 0;
   for (char c : port) {
     if (c < '0' || c > '9') throw std::invalid_argument("bad port in '" + host_port + "'");
+    value = value * 10 + (c - '0');
+    if (value > 65535) {
+      throw std::invalid_argument("bad port in '" + host_port + "' (ports are 0-65535)");
+    }
   }
-  if (std::stol(port) > 65535) throw std::invalid_argument("bad port in '" + host_port + "'");
   return {host, port};
 }
 
@@ -161,6 +167,12 @@ std::unique_ptr<FdStream> open_serial_port(const std::string& device, int baud) 
   const int fd = ::open(device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw StreamError(sys_error("open", device));
   auto stream = std::make_unique<FdStream>(fd, device);
+  // A regular file, /dev/null or a pipe is a wrong --port (bad input), not a robot that does
+  // not answer: refused before anything is written to it.
+  if (!::isatty(fd)) {
+    throw std::invalid_argument(device +
+                                ": not a serial port or terminal device (check the device name)");
+  }
   configure_raw_terminal(fd, baud, device);
   return stream;
 }

@@ -196,6 +196,23 @@ TEST(P2osCodec, ShortSipNamesFieldAndOffset) {
     EXPECT_NE(std::string(e.what()).find("SONAR"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("offset"), std::string::npos) << e.what();
   }
+}
+
+TEST(P2osCodec, ShortSipOffsetCountsFromTheTypeByte) {
+  // The third sonar starts at body offset 26 (type byte 0, 18 bytes of fields, the count at
+  // 19, three bytes a reading from 20); cut there, the message named offset 25 "of 25", one
+  // short, as if the type byte were not part of the body the offsets refer to.
+  Bytes body = encode_sip(sample_sip(3, false));
+  body.resize(26);
+  try {
+    decode_sip(body);
+    FAIL() << "expected DecodeError";
+  } catch (const DecodeError& e) {
+    EXPECT_NE(std::string(e.what()).find("SONAR number at body offset 26 needs 1 bytes, 0 left of "
+                                         "26"),
+              std::string::npos)
+        << e.what();
+  }
   EXPECT_THROW(decode_sip(Bytes{0x32, 1, 2}), DecodeError);
   EXPECT_THROW(decode_sip(Bytes{0x20}), DecodeError);
 }
@@ -281,6 +298,57 @@ TEST(P2osDecoder, BadChecksumRecoversPacketStartingInside) {
   ASSERT_EQ(packets.size(), 1u);
   EXPECT_EQ(packets[0].offset, 5u);
   EXPECT_EQ(d.dropped_bytes(), 5u);
+}
+
+TEST(P2osDecoder, StalledPacketIsAbandonedAndThePacketsBehindItFound) {
+  // A SIP cut off after 17 bytes (the controller reset while sending it), then the reset
+  // packet. The cut SIP's count asks for 24 more bytes that never come: the reset packet was
+  // never returned. The guard abandons the cut packet once it has waited its limit.
+  Bytes stream(kCapturedSip.begin(), kCapturedSip.begin() + 17);
+  const Bytes reset = frame(Bytes{kResetPacket});
+  stream.insert(stream.end(), reset.begin(), reset.end());
+  PacketDecoder d;
+  EXPECT_TRUE(decode_all(d, stream).empty());
+  EXPECT_EQ(d.buffered(), stream.size());
+  StalledPacketGuard guard(std::chrono::milliseconds(500));
+  const auto t0 = StalledPacketGuard::Clock::now();
+  EXPECT_FALSE(guard.check(d, t0));  // starts timing
+  EXPECT_EQ(guard.cap(d, t0 + std::chrono::milliseconds(200), std::chrono::milliseconds(1000)),
+            std::chrono::milliseconds(301));
+  EXPECT_FALSE(guard.check(d, t0 + std::chrono::milliseconds(499)));
+  EXPECT_TRUE(guard.check(d, t0 + std::chrono::milliseconds(500)));
+  const auto packets = decode_all(d, {});
+  ASSERT_EQ(packets.size(), 1u);
+  EXPECT_EQ(packets[0].type(), kResetPacket);
+  EXPECT_EQ(packets[0].offset, 17u);
+  ASSERT_FALSE(d.drops().empty());
+  EXPECT_EQ(d.drops().front().reason, "incomplete packet abandoned: count 33, 23 of 36 bytes");
+  EXPECT_EQ(d.dropped_bytes(), 17u);
+  EXPECT_FALSE(guard.check(d, t0 + std::chrono::milliseconds(2000)));  // nothing held
+}
+
+TEST(P2osDecoder, AbandoningAccountsForEveryByte) {
+  // Random bytes rich in headers, then the sender stops: abandoning until nothing is held
+  // ends, and every byte fed is either in a packet returned or counted as dropped.
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 500; ++trial) {
+    Bytes bytes(rng() % 400);
+    for (auto& b : bytes) {
+      const auto r = rng() % 4;
+      b = r == 0 ? 0xFA : r == 1 ? 0xFB : static_cast<std::uint8_t>(rng());
+    }
+    PacketDecoder d;
+    std::size_t in_packets = 0;
+    for (const Packet& p : decode_all(d, bytes)) in_packets += p.body.size() + 5;
+    int rounds = 0;
+    while (d.abandon_partial()) {
+      ++rounds;
+      while (auto p = d.next()) in_packets += p->body.size() + 5;
+    }
+    EXPECT_EQ(d.buffered(), 0u);
+    EXPECT_LE(rounds, static_cast<int>(bytes.size()));
+    EXPECT_EQ(in_packets + d.dropped_bytes(), bytes.size()) << "trial " << trial;
+  }
 }
 
 TEST(P2osDecoder, SeededRandomCorruptionNeverCrashesAndRecovers) {

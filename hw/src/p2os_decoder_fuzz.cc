@@ -23,5 +23,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     decoder.feed({data + half, size - half});
   }
+  // The sender stops: whatever is held is abandoned packet by packet until nothing is left.
+  while (decoder.abandon_partial()) {
+    while (decoder.next()) {
+    }
+  }
   return 0;
 }

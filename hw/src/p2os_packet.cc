@@ -1,6 +1,7 @@
 // P2OS framing, checksum, command encoding and the resynchronising decoder.
 #include "cogmap/hw/p2os_packet.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -73,6 +74,17 @@ void PacketDecoder::clear() {
   buffer_.clear();
 }
 
+bool PacketDecoder::abandon_partial() {
+  if (buffer_.empty()) return false;
+  std::string why = "incomplete packet abandoned";
+  if (buffer_.size() >= 3) {
+    why += ": count " + std::to_string(buffer_[2]) + ", " + std::to_string(buffer_.size()) +
+           " of " + std::to_string(buffer_[2] + 3) + " bytes";
+  }
+  drop(1, why);
+  return true;
+}
+
 void PacketDecoder::drop(std::size_t n, const std::string& reason) {
   // Consecutive single-byte drops while hunting for a header merge into one event.
   if (!drops_.empty() && drops_.back().reason == reason &&
@@ -122,6 +134,32 @@ std::optional<Packet> PacketDecoder::next() {
     base_offset_ += count + 3;
     return packet;
   }
+}
+
+bool StalledPacketGuard::check(PacketDecoder& decoder, Clock::time_point now) {
+  if (decoder.buffered() == 0) {
+    timing_ = false;
+    return false;
+  }
+  if (!timing_ || decoder.front_offset() != front_) {
+    timing_ = true;
+    front_ = decoder.front_offset();
+    since_ = now;
+    return false;
+  }
+  if (now - since_ < limit_) return false;
+  decoder.abandon_partial();
+  timing_ = false;  // whatever is at the front now is timed afresh
+  return true;
+}
+
+std::chrono::milliseconds StalledPacketGuard::cap(const PacketDecoder& decoder,
+                                                  Clock::time_point now,
+                                                  std::chrono::milliseconds wait) const {
+  if (decoder.buffered() == 0) return wait;
+  if (!timing_ || decoder.front_offset() != front_) return std::min(wait, limit_);
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(since_ + limit_ - now);
+  return std::clamp(left + std::chrono::milliseconds(1), std::chrono::milliseconds(0), wait);
 }
 
 }  // namespace cogmap::hw::p2os

@@ -13,11 +13,33 @@ using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
 namespace {
-constexpr milliseconds kReadSlice{20};  // I/O loop granularity: command latency bound
+constexpr milliseconds kReadSlice{20};       // I/O loop granularity: command latency bound
+constexpr std::uint64_t kLoggedBadSips = 5;  // then every 1000th: a bad peer must not flood
+
+// Peer-supplied text (SYNC2 strings) for a message: control and non-ASCII bytes as \xNN, so a
+// robot name cannot move the cursor or clear the user's terminal.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto b = static_cast<unsigned char>(c);
+    if (b >= 0x20 && b < 0x7F && b != '\\') {
+      out.push_back(c);
+    } else {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out.push_back(kHex[b >> 4]);
+      out.push_back(kHex[b & 0xF]);
+    }
+  }
+  return out;
+}
 }  // namespace
 
 P2osRobot::P2osRobot(std::unique_ptr<ByteStream> stream, P2osRobotOptions options)
-    : stream_(std::move(stream)), options_(std::move(options)), geometry_(mapper::p2at_geometry()) {
+    : stream_(std::move(stream)),
+      options_(std::move(options)),
+      geometry_(mapper::p2at_geometry()),
+      stall_guard_(options_.partial_packet_timeout) {
   start_ = Clock::now();
   if (!handshake()) {
     throw StreamError(stream_->name() + ": P2OS handshake failed: " + failure_);
@@ -36,30 +58,39 @@ void P2osRobot::send(const std::vector<std::uint8_t>& packet) {
   last_sent_ = Clock::now();
 }
 
+void P2osRobot::receive(milliseconds timeout) {
+  // While a packet is incomplete, wait no longer than its remaining allowance: a packet cut
+  // off in the middle must not hide the packets behind it.
+  std::uint8_t buf[512];
+  const std::size_t n = stream_->read(buf, stall_guard_.cap(decoder_, Clock::now(), timeout));
+  if (n > 0) decoder_.feed({buf, n});
+}
+
 std::optional<p2os::Packet> P2osRobot::read_packet(milliseconds timeout) {
   const auto deadline = Clock::now() + timeout;
-  std::uint8_t buf[256];
   for (;;) {
     if (auto p = decoder_.next()) return p;
+    if (stall_guard_.check(decoder_, Clock::now())) continue;
     const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) return std::nullopt;
-    const std::size_t n = stream_->read(buf, left);
-    if (n == 0) return std::nullopt;
-    decoder_.feed({buf, n});
+    receive(left);
   }
 }
 
 bool P2osRobot::handshake() {
   using p2os::Command;
   decoder_.clear();
+  stall_guard_.reset();
   const auto give_up = Clock::now() + options_.handshake_timeout;
   int attempts = 0;
+  std::string last_problem;  // why the latest attempt did not finish, for the failure message
   for (; attempts < options_.sync_attempts && Clock::now() < give_up; ++attempts) {
     {
       std::lock_guard lock(mutex_);
       if (stopping_) break;
     }
     int step = 0;
+    bool noted = false;  // last_problem already says what went wrong in this attempt
     send(p2os::encode_command(Command::kSync0));
     bool restart = false;
     // Each step has one deadline, however many other packets arrive meanwhile.
@@ -68,12 +99,18 @@ bool P2osRobot::handshake() {
       const auto left = std::chrono::duration_cast<milliseconds>(step_deadline - Clock::now());
       const auto packet = left.count() > 0 ? read_packet(left) : std::nullopt;
       if (!packet) {
+        if (!noted) {
+          last_problem = "no reply to SYNC" + std::to_string(step) + " within " +
+                         std::to_string(options_.sync_reply_timeout.count()) + " ms";
+        }
         restart = true;  // no echo in time: start again from SYNC0
         break;
       }
       const std::uint8_t type = packet->type();
       if (p2os::is_sip(type)) {
         // The robot was left open by an earlier client: close it and sync from scratch.
+        last_problem = "a SIP during sync at stream offset " + std::to_string(packet->offset) +
+                       " (the robot was left open; CLOSE sent)";
         log(stream_->name() + ": SIP during sync, robot was left open: sending CLOSE");
         send(p2os::encode_command(Command::kClose));
         {
@@ -88,6 +125,16 @@ bool P2osRobot::handshake() {
         break;
       }
       if (type != step) continue;  // a stale echo of an earlier round
+      if (step == 2 && packet->body.size() == 1) {
+        // A SYNC2 without a single string: our own SYNC2 coming back over a link that echoes
+        // what it is sent (the robot's reply, which carries the strings, follows it). Wait on.
+        last_problem = "SYNC2 came back without name strings at stream offset " +
+                       std::to_string(packet->offset) +
+                       " (an echo of our own SYNC2: the link echoes what it is sent) and no "
+                       "robot reply followed";
+        noted = true;
+        continue;
+      }
       if (step == 2) {
         try {
           const p2os::RobotIdentity id = p2os::decode_sync2(packet->body);
@@ -99,8 +146,9 @@ bool P2osRobot::handshake() {
                                model->name != mapper::find_robot_model(identity_.subclass)->name;
           if (!factors || !model || changed) {
             std::lock_guard lock(mutex_);
-            failure_ = "robot '" + id.name + "' is a " + id.klass + " '" + id.subclass + "', " +
-                       (changed ? "not the " + identity_.subclass + " connected before"
+            failure_ = "robot '" + printable(id.name) + "' is a " + printable(id.klass) + " '" +
+                       printable(id.subclass) + "', " +
+                       (changed ? "not the " + printable(identity_.subclass) + " connected before"
                                 : "not a known Pioneer (" + mapper::robot_model_names() +
                                       " and their -sh/8+ variants)");
             return false;
@@ -111,7 +159,9 @@ bool P2osRobot::handshake() {
           std::lock_guard lock(mutex_);
           identity_ = id;
         } catch (const p2os::DecodeError& e) {
-          log(stream_->name() + ": bad SYNC2 reply: " + e.what());
+          last_problem = "bad SYNC2 reply at stream offset " + std::to_string(packet->offset) +
+                         ": " + e.what();
+          log(stream_->name() + ": " + last_problem);
           restart = true;
           break;
         }
@@ -125,11 +175,12 @@ bool P2osRobot::handshake() {
       send(p2os::encode_command(Command::kEnable, 1));
       send(p2os::encode_command(Command::kSonar, 1));
       last_sip_ = Clock::now();
+      bad_since_sip_ = 0;
       std::lock_guard lock(mutex_);
       ++stats_.connections;
       motion_dirty_ = true;  // resend the motion in force before the reconnection
-      log(stream_->name() + ": connected to " + identity_.name + " (" + identity_.klass + " " +
-          identity_.subclass + ")");
+      log(stream_->name() + ": connected to " + printable(identity_.name) + " (" +
+          printable(identity_.klass) + " " + printable(identity_.subclass) + ")");
       return true;
     }
   }
@@ -140,6 +191,7 @@ bool P2osRobot::handshake() {
              std::to_string(spent.count()) + " ms (limits " +
              std::to_string(options_.sync_attempts) + " attempts, " +
              std::to_string(options_.handshake_timeout.count()) + " ms)";
+  if (!last_problem.empty()) failure_ += "; last: " + last_problem;
   return false;
 }
 
@@ -148,13 +200,24 @@ void P2osRobot::handle_sip(const p2os::Packet& packet) {
   try {
     sip = p2os::decode_sip(packet.body);
   } catch (const p2os::DecodeError& e) {
+    ++bad_since_sip_;
+    last_bad_sip_ = Clock::now();
+    last_bad_sip_reason_ =
+        "SIP at stream offset " + std::to_string(packet.offset) + ": " + e.what();
     std::lock_guard lock(mutex_);
     ++stats_.bad_sips;
-    log(stream_->name() + ": SIP at stream offset " + std::to_string(packet.offset) + ": " +
-        e.what());
+    if (stats_.bad_sips <= kLoggedBadSips || stats_.bad_sips % 1000 == 0) {
+      log(stream_->name() + ": " + last_bad_sip_reason_ +
+          (stats_.bad_sips == kLoggedBadSips ? " (further undecodable SIPs are counted; every "
+                                               "1000th is logged)"
+           : stats_.bad_sips > kLoggedBadSips
+               ? " (" + std::to_string(stats_.bad_sips) + " undecodable SIPs so far)"
+               : ""));
+    }
     return;
   }
   last_sip_ = Clock::now();
+  bad_since_sip_ = 0;
   ++sip_count_;
   mapper::SensorFrame frame;
   frame.time_s = options_.clock == FrameClock::kHost
@@ -166,6 +229,15 @@ void P2osRobot::handle_sip(const p2os::Packet& packet) {
   std::uint64_t unknown = 0;
   for (const p2os::SipSonar& s : sip.sonars) {
     if (s.number >= geometry_.sonars.size()) {
+      if (!reported_unknown_sonar_) {
+        reported_unknown_sonar_ = true;
+        log(stream_->name() + ": SIP at stream offset " + std::to_string(packet.offset) +
+            ": sonar number " + std::to_string(s.number) + " is beyond the " +
+            std::to_string(geometry_.sonars.size()) + " transducers of a " +
+            printable(identity_.subclass) +
+            "; readings of transducers the model does not have are dropped (counted, not "
+            "logged again)");
+      }
       ++unknown;
       continue;
     }
@@ -208,7 +280,6 @@ void P2osRobot::send_motion() {
 }
 
 void P2osRobot::io_loop() {
-  std::uint8_t buf[512];
   Clock::time_point reconnect_since{};
   bool reconnecting = false;
   bool after_reset = false;
@@ -241,25 +312,38 @@ void P2osRobot::io_loop() {
         }
         continue;
       }
-      const std::size_t n = stream_->read(buf, kReadSlice);
-      if (n > 0) decoder_.feed({buf, n});
-      while (auto packet = decoder_.next()) {
-        if (p2os::is_sip(packet->type())) {
-          handle_sip(*packet);
-        } else if (packet->type() == p2os::kResetPacket) {
-          log(stream_->name() + ": controller reset at stream offset " +
-              std::to_string(packet->offset) + ": reconnecting");
-          std::lock_guard lock(mutex_);
-          ++stats_.resets;
-          reconnecting = true;
-          after_reset = true;
+      receive(kReadSlice);
+      do {
+        while (auto packet = decoder_.next()) {
+          if (p2os::is_sip(packet->type())) {
+            handle_sip(*packet);
+          } else if (packet->type() == p2os::kResetPacket) {
+            log(stream_->name() + ": controller reset at stream offset " +
+                std::to_string(packet->offset) + ": reconnecting");
+            std::lock_guard lock(mutex_);
+            ++stats_.resets;
+            reconnecting = true;
+            after_reset = true;
+          }
         }
-      }
+      } while (stall_guard_.check(decoder_, Clock::now()));
       {
         std::lock_guard lock(mutex_);
         stats_.dropped_bytes = decoder_.dropped_bytes();
       }
       if (!reconnecting && Clock::now() - last_sip_ > options_.silence_timeout) {
+        if (bad_since_sip_ >= 3 && Clock::now() - last_bad_sip_ < options_.silence_timeout / 2) {
+          // Not silent: SIPs keep coming but none parses. A reconnection would only bring more
+          // of them (and once reconnected, failure() was empty and the run ended "fine").
+          std::lock_guard lock(mutex_);
+          failure_ = "no SIP could be decoded for " +
+                     std::to_string(options_.silence_timeout.count()) +
+                     " ms: " + std::to_string(bad_since_sip_) +
+                     " SIPs with valid checksums did not parse (not the standard SIP layout?); "
+                     "the last: " +
+                     last_bad_sip_reason_;
+          break;
+        }
         log(stream_->name() + ": no SIP for " + std::to_string(options_.silence_timeout.count()) +
             " ms: reconnecting");
         reconnecting = true;
@@ -294,7 +378,18 @@ void P2osRobot::io_loop() {
 std::optional<mapper::SensorFrame> P2osRobot::next_frame() {
   std::unique_lock lock(mutex_);
   cv_.wait_for(lock, options_.frame_wait, [&] { return !frames_.empty() || finished_; });
-  if (frames_.empty()) return std::nullopt;
+  if (frames_.empty()) {
+    if (!finished_ && !stopping_ && wait_expired_.empty()) {
+      // The session ends here for the caller. A peer that completes every handshake but sends
+      // no SIP (or none of a type this driver reads) reconnected every silence_timeout with
+      // failure() empty, and `drive` wrote an empty run and exited 0.
+      wait_expired_ = "no SIP in " + std::to_string(options_.frame_wait.count()) + " ms (" +
+                      std::to_string(stats_.connections) + " handshakes, " +
+                      std::to_string(stats_.sips) + " SIPs, " + std::to_string(stats_.bad_sips) +
+                      " undecodable)";
+    }
+    return std::nullopt;
+  }
   mapper::SensorFrame f = std::move(frames_.front());
   frames_.pop_front();
   return f;
@@ -334,7 +429,7 @@ P2osStats P2osRobot::stats() const {
 
 std::string P2osRobot::failure() const {
   std::lock_guard lock(mutex_);
-  return failure_;
+  return failure_.empty() ? wait_expired_ : failure_;
 }
 
 }  // namespace cogmap::hw

@@ -2,6 +2,8 @@
 // server's side of the link: left open, corruption, silence, controller reset, counter wrap.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <thread>
 
 #include "cogmap/hw/fd_stream.h"
@@ -368,6 +370,33 @@ TEST(SerialPort, RejectsUnsupportedBaud) {
   for (int baud : {9600, 19200, 38400, 57600, 115200}) {
     EXPECT_NO_THROW(open_serial_port(pty->slave_path, baud));
   }
+}
+
+TEST(SerialPort, NonTerminalPathIsBadInputAndLeftUntouched) {
+  // `drive --port /dev/null` or a regular file was exit 1, "tcgetattr: Inappropriate ioctl",
+  // as if a robot had not answered; it is a wrong argument (exit 2 in `drive`).
+  EXPECT_THROW(open_serial_port("/dev/null", 9600), std::invalid_argument);
+  const std::string path = ::testing::TempDir() + "cogmap_not_a_tty.txt";
+  { std::ofstream(path) << "keep me\n"; }
+  try {
+    open_serial_port(path, 9600);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("not a serial port"), std::string::npos) << e.what();
+  }
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "keep me");
+  std::remove(path.c_str());
+}
+
+TEST(TcpTransport, HugePortIsBadInputNotAnInternalError) {
+  // std::stol threw std::out_of_range: `drive` reported an internal error (exit 1) and
+  // `serve`, whose threads were running, died in std::terminate.
+  EXPECT_THROW(connect_tcp("127.0.0.1:99999999999999999999", 100ms), std::invalid_argument);
+  EXPECT_THROW(TcpListener("127.0.0.1:99999999999999999999"), std::invalid_argument);
+  EXPECT_THROW(TcpListener("127.0.0.1:65536"), std::invalid_argument);
 }
 
 TEST(TcpTransport, ConnectsAndRejectsBadAddresses) {

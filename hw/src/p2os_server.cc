@@ -197,23 +197,38 @@ void P2osServer::step_and_send_sip() {
   sip.stall_left = frame->stall_left ? 1 : 0;
   sip.stall_right = frame->stall_right ? 1 : 0;
   sip.flags = static_cast<std::uint16_t>((motors_ ? 1 : 0) | (sonar_on_ ? 0x1E : 0));
+  sip.battery_x10 = 130;
+  sip.charge_state = 0;
+  sip.rot_vel = static_cast<std::int16_t>(std::lround(w_radps_ * 1800.0 / std::numbers::pi));
   if (sonar_on_) {
     const double max_m = body_.geometry().sonar_max_range_m;
     // No echo: a raw range that converts back to at least the maximum.
     const auto no_echo_raw = static_cast<std::uint16_t>(
         std::min(65535.0, std::ceil(max_m * 1000.0 / factors_.sonar_mm_per_unit) + 1));
+    // As on P2OS, a SIP carries each transducer's newest reading: a transducer that fired twice
+    // in the cycle (SONAR_CYCLE below 50 ms, a short POLLING sequence) is reported once. 100
+    // readings used to make a 330-byte packet, and frame() threw out of run().
     for (const mapper::SonarReading& r : frame->sonar) {
       if (r.index < 0 || r.index > 255) continue;
       const double raw = r.range_m * 1000.0 / factors_.sonar_mm_per_unit;
-      sip.sonars.push_back(
-          {static_cast<std::uint8_t>(r.index),
-           r.echo ? static_cast<std::uint16_t>(std::clamp(std::round(raw), 0.0, 65535.0))
-                  : no_echo_raw});
+      const p2os::SipSonar reading{
+          static_cast<std::uint8_t>(r.index),
+          r.echo ? static_cast<std::uint16_t>(std::clamp(std::round(raw), 0.0, 65535.0))
+                 : no_echo_raw};
+      const auto same = std::find_if(sip.sonars.begin(), sip.sonars.end(),
+                                     [&](const p2os::SipSonar& s) { return s.number == r.index; });
+      if (same != sip.sonars.end()) sip.sonars.erase(same);
+      sip.sonars.push_back(reading);
+    }
+    // A body with more transducers than one packet holds (3 bytes a reading) keeps the newest.
+    p2os::Sip bare = sip;
+    bare.sonars.clear();
+    const std::size_t fixed = p2os::encode_sip(bare).size();
+    const std::size_t room = (p2os::kMaxCount - 2 - fixed) / 3;
+    if (sip.sonars.size() > room) {
+      sip.sonars.erase(sip.sonars.begin(), sip.sonars.end() - static_cast<std::ptrdiff_t>(room));
     }
   }
-  sip.battery_x10 = 130;
-  sip.charge_state = 0;
-  sip.rot_vel = static_cast<std::int16_t>(std::lround(w_radps_ * 1800.0 / std::numbers::pi));
   stream_.write(p2os::frame(p2os::encode_sip(sip)));
   {
     std::lock_guard lock(stats_mutex_);
@@ -224,6 +239,7 @@ void P2osServer::step_and_send_sip() {
 void P2osServer::run(const std::atomic<bool>& stop) {
   std::uint8_t buf[512];
   auto next_cycle = Clock::now() + options_.cycle;
+  p2os::StalledPacketGuard stall_guard(options_.partial_packet_timeout);
   try {
     while (!stop) {
       const auto now = Clock::now();
@@ -263,7 +279,12 @@ void P2osServer::run(const std::atomic<bool>& stop) {
       const auto wait = std::chrono::duration_cast<milliseconds>(next_cycle - now);
       const std::size_t n = stream_.read(buf, std::max(wait, milliseconds(1)));
       if (n > 0) decoder_.feed({buf, n});
-      while (auto packet = decoder_.next()) handle(*packet);
+      // A client packet cut off (a corrupted count byte, a client killed mid-write) must not
+      // hold back the commands behind it until 200 bytes have piled up: at the keep-alive's
+      // 18 bytes per 200 ms that took over 2 s, and the watchdog had stopped the robot.
+      do {
+        while (auto packet = decoder_.next()) handle(*packet);
+      } while (stall_guard.check(decoder_, Clock::now()));
       {
         std::lock_guard lock(stats_mutex_);
         stats_.bad_bytes = decoder_.dropped_bytes();

@@ -168,5 +168,95 @@ TEST(P2osServer, SilentOpenClientIsDroppedAfterClientTimeout) {
   EXPECT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
 }
 
+// A body whose frames carry 100 readings each: what the simulator reports after a client's
+// SONAR_CYCLE 2 (each array fires a disc every 2 ms, 50 per array in a 100 ms cycle). The SIP
+// of 100 readings needed a 330-byte packet; frame() threw std::invalid_argument out of run()
+// and `cogmap serve` exited 2 on a valid client command. A P2OS SIP carries each transducer's
+// newest reading; so does the server now.
+class ChattyBody final : public mapper::Robot {
+ public:
+  const mapper::RobotGeometry& geometry() const override { return geometry_; }
+  std::optional<mapper::SensorFrame> next_frame() override {
+    mapper::SensorFrame f;
+    f.time_s = 0.1 * static_cast<double>(++cycles_);
+    for (int k = 0; k < 100; ++k) {
+      mapper::SonarReading r;
+      r.index = k % 16;
+      r.range_m = 1.0 + 0.01 * k;  // later readings are longer: the newest is recognisable
+      r.echo = true;
+      f.sonar.push_back(r);
+    }
+    return f;
+  }
+  void command(const mapper::VelocityCommand&) override {}
+  void stop() override {}
+
+ private:
+  mapper::RobotGeometry geometry_ = mapper::p2at_geometry();
+  int cycles_ = 0;
+};
+
+TEST(P2osServer, ManyReadingsInOneCycleFitOneSip) {
+  auto [robot_end, client] = make_memory_pair();
+  ChattyBody body;
+  P2osServerOptions o;
+  o.cycle = 20ms;
+  P2osServer server(*robot_end, body, o);
+  std::atomic<bool> stop{false};
+  std::string escaped;
+  std::thread thread([&] {
+    try {
+      server.run(stop);
+    } catch (const std::exception& e) {
+      escaped = e.what();
+    }
+  });
+  p2os::PacketDecoder decoder;
+  client->write(p2os::encode_command(Command::kSync0));
+  ASSERT_TRUE(await(*client, decoder, 0));
+  client->write(p2os::encode_command(Command::kSync1));
+  ASSERT_TRUE(await(*client, decoder, 1));
+  client->write(p2os::encode_command(Command::kSync2));
+  ASSERT_TRUE(await(*client, decoder, 2));
+  client->write(p2os::encode_command(Command::kOpen));
+  std::vector<p2os::Sip> sips;
+  for (int i = 0; i < 3; ++i) {
+    const auto packet = await(*client, decoder, p2os::kSipStopped);
+    if (!packet) break;
+    sips.push_back(p2os::decode_sip(packet->body));
+  }
+  stop = true;
+  thread.join();
+  EXPECT_EQ(escaped, "");
+  ASSERT_EQ(sips.size(), 3u);
+  for (const p2os::Sip& sip : sips) {
+    ASSERT_EQ(sip.sonars.size(), 16u);
+    for (const p2os::SipSonar& r : sip.sonars) {
+      // transducer i's newest reading is k = 96 + i for i < 4, else 80 + i
+      const int k = r.number < 4 ? 96 + r.number : 80 + r.number;
+      EXPECT_NEAR(r.range * 0.268 / 1000.0, 1.0 + 0.01 * k, 0.0003) << int(r.number);
+    }
+  }
+}
+
+// A client packet whose count byte was corrupted to 200 (a USB-serial adapter flips a bit):
+// the decoder waited for 203 bytes, so every command behind it was held back until enough
+// keep-alives had piled up behind it, 18 bytes per 200 ms: over 2 s, past the watchdog. Now a
+// packet still incomplete 500 ms after it began is abandoned and the commands behind it obeyed.
+TEST(P2osServer, CorruptedCountDoesNotHoldBackLaterCommands) {
+  Served s;
+  s.open();
+  ASSERT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+  const std::vector<std::uint8_t> cut = {0xFA, 0xFB, 0xC8, 0x0B, 0x3B};
+  s.client->write(cut);
+  for (int i = 0; i < 5; ++i) {  // 1 s of keep-alives, as P2osRobot sends them
+    s.client->write(p2os::encode_command(Command::kVel, 250));
+    s.client->write(p2os::encode_command(Command::kRVel, 0));
+    std::this_thread::sleep_for(200ms);
+  }
+  EXPECT_NEAR(s.body.current().v_mps, 0.25, 1e-12);
+  EXPECT_GE(s.server->stats().bad_bytes, 1u);
+}
+
 }  // namespace
 }  // namespace cogmap::hw

@@ -10,9 +10,10 @@ namespace cogmap::hw::p2os {
 namespace {
 
 // Bounds-checked little-endian reader over a packet body; errors name the offset and field.
+// Offsets count from the type byte (offset 0), as Packet::body holds it.
 class Reader {
  public:
-  explicit Reader(std::span<const std::uint8_t> body) : body_(body) {}
+  Reader(std::span<const std::uint8_t> body, std::size_t start) : body_(body), pos_(start) {}
   std::size_t remaining() const { return body_.size() - pos_; }
   std::size_t pos() const { return pos_; }
   std::uint8_t u8(const char* field) {
@@ -81,7 +82,7 @@ Sip decode_sip(std::span<const std::uint8_t> body) {
     throw DecodeError("not a SIP: type byte " +
                       (body.empty() ? std::string("missing") : std::to_string(body[0])));
   }
-  Reader r(body.subspan(1));
+  Reader r(body, 1);
   Sip s;
   s.moving = body[0] == 0x33;
   s.x_pos = r.u16("XPOS");

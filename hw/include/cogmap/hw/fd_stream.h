@@ -33,7 +33,9 @@ class FdStream : public ByteStream {
 };
 
 /// Opens a serial device raw 8N1, no flow control, at `baud` (9600, 19200, 38400, 57600 or
-/// 115200; anything else throws std::invalid_argument). Throws StreamError naming the device.
+/// 115200; anything else throws std::invalid_argument, as does a path that is not a terminal:
+/// a regular file, /dev/null, a pipe). Throws StreamError naming the device when it cannot be
+/// opened or configured.
 std::unique_ptr<FdStream> open_serial_port(const std::string& device, int baud);
 
 /// Sets raw 8N1 at `baud` on an open terminal descriptor (used for serial ports and ptys).
@@ -41,14 +43,16 @@ std::unique_ptr<FdStream> open_serial_port(const std::string& device, int baud);
 void configure_raw_terminal(int fd, int baud, const std::string& name);
 
 /// Connects to `host:port` (IPv4/IPv6, TCP_NODELAY), giving up after `timeout`. Throws
-/// std::invalid_argument for a malformed address, StreamError when the connection fails.
+/// std::invalid_argument for a malformed address (a port that is not a number 0-65535),
+/// StreamError when the connection fails.
 std::unique_ptr<FdStream> connect_tcp(const std::string& host_port,
                                       std::chrono::milliseconds timeout);
 
 /// A listening TCP socket, for the robot side (`cogmap serve --tcp`).
 class TcpListener {
  public:
-  /// Binds and listens on `host:port`; port 0 picks a free port. Throws StreamError.
+  /// Binds and listens on `host:port`; port 0 picks a free port. Throws std::invalid_argument
+  /// for a malformed address, StreamError when it cannot listen.
   explicit TcpListener(const std::string& host_port);
   ~TcpListener();
   TcpListener(const TcpListener&) = delete;

@@ -3,6 +3,7 @@
 /// command byte with its data, and a big-endian 16-bit checksum. Encoding of client commands
 /// and a streaming decoder that resynchronises after corruption.
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -96,7 +97,9 @@ struct DropEvent {
 
 /// Streaming decoder: feed() any bytes, next() returns whole valid packets. After a bad byte,
 /// count or checksum it discards one byte and scans for the next `FA FB`, so a valid packet
-/// following garbage is always found. Memory stays bounded by the largest packet.
+/// following garbage is always found. Memory stays bounded by the largest packet, provided
+/// next() is called after every feed(). A packet cut short waits for its missing bytes until
+/// abandon_partial() is called (P2osRobot does after `partial_packet_timeout` of quiet).
 class PacketDecoder {
  public:
   /// Appends received bytes.
@@ -112,6 +115,15 @@ class PacketDecoder {
   std::uint64_t offset() const { return base_offset_ + buffer_.size(); }
   /// Forgets buffered bytes (after a reconnect); offsets keep counting.
   void clear();
+  /// Bytes held after next() returned empty: the start of a packet not yet complete.
+  std::size_t buffered() const { return buffer_.size(); }
+  /// Stream offset of the first byte held.
+  std::uint64_t front_offset() const { return base_offset_; }
+  /// Gives up on the incomplete packet at the front (its sender stopped in the middle: a
+  /// controller reset while sending a SIP, a count byte corrupted upwards): drops its header
+  /// byte, recorded as a drop event, so next() scans on and finds any whole packet among the
+  /// bytes behind it. StalledPacketGuard decides when. Returns false when nothing is held.
+  bool abandon_partial();
 
   static constexpr std::size_t kMaxEvents = 64;
 
@@ -122,6 +134,31 @@ class PacketDecoder {
   std::uint64_t base_offset_ = 0;  // stream offset of buffer_.front()
   std::uint64_t dropped_bytes_ = 0;
   std::deque<DropEvent> drops_;
+};
+
+/// Decides when an incomplete packet has waited long enough: a packet that has stayed at the
+/// front of the decoder, incomplete, for `limit` is abandoned (ARIA gives up on a packet after
+/// 100 ms without data). Without it, the bytes behind a packet that was cut off (or whose count
+/// byte was corrupted upwards) waited until up to 203 bytes had piled up: a reset packet that
+/// followed a truncated SIP was never read, and every command behind a corrupted count was
+/// held back for seconds. Use: drain next(), then call check(); if it returns true, drain again.
+class StalledPacketGuard {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit StalledPacketGuard(std::chrono::milliseconds limit) : limit_(limit) {}
+  /// Abandons the front packet when it has been incomplete for `limit`; true when it did.
+  bool check(PacketDecoder& decoder, Clock::time_point now);
+  /// How long a read may wait before check() is due; `wait` when nothing is pending.
+  std::chrono::milliseconds cap(const PacketDecoder& decoder, Clock::time_point now,
+                                std::chrono::milliseconds wait) const;
+  /// Forgets the packet being timed (after PacketDecoder::clear()).
+  void reset() { timing_ = false; }
+
+ private:
+  std::chrono::milliseconds limit_;
+  bool timing_ = false;
+  std::uint64_t front_ = 0;  // decoder front offset being timed
+  Clock::time_point since_;  // when that front was first seen incomplete
 };
 
 }  // namespace cogmap::hw::p2os

@@ -42,6 +42,11 @@ struct P2osRobotOptions {
   std::chrono::milliseconds silence_timeout{2000};     ///< no SIP this long: reconnect
   std::chrono::milliseconds reconnect_give_up{30000};  ///< reconnecting longer: disconnected
   std::chrono::milliseconds frame_wait{30000};         ///< next_frame() waits at most this
+  /// A packet still incomplete this long after it began is abandoned, so the whole packets
+  /// behind it are read: a controller that resets while sending a SIP sends the truncated SIP,
+  /// then the reset packet, then nothing until the next SYNC0. The largest packet (203 bytes)
+  /// takes 211 ms at 9600 baud; ARIA gives up after 100 ms without data.
+  std::chrono::milliseconds partial_packet_timeout{500};
   FrameClock clock = FrameClock::kHost;
   double sip_period_s = 0.1;            ///< for FrameClock::kSipCount
   std::size_t max_queued_frames = 600;  ///< oldest dropped beyond this (a minute of SIPs)
@@ -52,10 +57,11 @@ struct P2osRobotOptions {
 /// Connection counters, for the run report and tests.
 struct P2osStats {
   std::uint64_t sips = 0;            ///< SIPs decoded
-  std::uint64_t bad_sips = 0;        ///< valid checksum but undecodable
+  std::uint64_t bad_sips = 0;        ///< valid checksum but undecodable (the first few logged)
   std::uint64_t dropped_bytes = 0;   ///< discarded by the packet decoder
   std::uint64_t dropped_frames = 0;  ///< frames discarded because the queue was full
-  std::uint64_t unknown_sonars = 0;  ///< sonar numbers beyond the geometry
+  std::uint64_t unknown_sonars = 0;  ///< readings of sonar numbers beyond the geometry (dropped;
+                                     ///< the first is logged with its stream offset)
   int connections = 0;               ///< successful handshakes (1 + reconnections)
   int left_open_recoveries = 0;      ///< SIPs seen during sync, CLOSE sent
   int resets = 0;                    ///< 0xFF reset packets received
@@ -88,7 +94,10 @@ class P2osRobot final : public mapper::Robot {
   /// What the robot said in SYNC2.
   p2os::RobotIdentity identity() const;
   P2osStats stats() const;
-  /// Why the connection ended (empty while connected).
+  /// Why the connection ended (empty while connected). Among the reasons: no SIP could be
+  /// decoded for silence_timeout while undecodable ones kept arriving (the message names the
+  /// field, body offset and stream offset of the last), which no reconnection can cure; and
+  /// next_frame() waiting frame_wait in vain (a peer that handshakes but sends no SIP).
   std::string failure() const;
 
  private:
@@ -96,6 +105,7 @@ class P2osRobot final : public mapper::Robot {
   bool handshake();  // on the I/O thread (or the constructor before it starts)
   void send(const std::vector<std::uint8_t>& packet);
   std::optional<p2os::Packet> read_packet(std::chrono::milliseconds timeout);
+  void receive(std::chrono::milliseconds timeout);  // stream -> decoder, abandons cut packets
   void handle_sip(const p2os::Packet& packet);
   void send_motion();
   void log(const std::string& message) const;
@@ -104,12 +114,19 @@ class P2osRobot final : public mapper::Robot {
   P2osRobotOptions options_;
   mapper::RobotGeometry geometry_;
   p2os::PacketDecoder decoder_;
+  p2os::StalledPacketGuard stall_guard_;
   OdometryUnwrapper odometry_;
   p2os::ConversionFactors factors_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_sip_;
   std::chrono::steady_clock::time_point last_sent_;
   std::uint64_t sip_count_ = 0;
+  // Undecodable SIPs since the last good one: a peer whose every SIP fails to parse is not
+  // silent, and reconnecting cannot help, so the session ends with the reason.
+  std::uint64_t bad_since_sip_ = 0;
+  std::chrono::steady_clock::time_point last_bad_sip_;
+  std::string last_bad_sip_reason_;
+  bool reported_unknown_sonar_ = false;
 
   mutable std::mutex mutex_;  // guards everything below
   std::condition_variable cv_;
@@ -119,6 +136,7 @@ class P2osRobot final : public mapper::Robot {
   bool stopping_ = false;
   bool finished_ = false;
   std::string failure_;
+  std::string wait_expired_;  // next_frame() ended the session: no frame within frame_wait
   p2os::RobotIdentity identity_;
   P2osStats stats_;
   std::thread thread_;

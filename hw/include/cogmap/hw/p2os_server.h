@@ -32,6 +32,9 @@ struct P2osServerOptions {
   /// An open client silent this long is gone (crashed without CLOSE): the server closes and
   /// waits for a new handshake, so SIPs do not pile up in a link nobody reads.
   std::chrono::milliseconds client_timeout{10000};
+  /// A client packet still incomplete this long after it began is abandoned, so the commands
+  /// behind it are read (as P2osRobot does with the robot's packets).
+  std::chrono::milliseconds partial_packet_timeout{500};
   /// Track width used to turn VEL2 wheel speeds into a turn rate, metres.
   double vel2_track_m = 0.394;
   /// Position counters at power-up: a controller left running holds any value (tests use

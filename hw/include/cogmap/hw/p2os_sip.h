@@ -26,7 +26,7 @@ struct SipSonar {
 
 /// The standard SIP, raw units as sent (P2AT.md "Standard SIP").
 struct Sip {
-  bool moving = false;           ///< type 0x33 (moving) or 0x32 (stopped)
+  bool moving = false;           ///< type 0x33 (moving); any other SIP type is "stopped"
   std::uint16_t x_pos = 0;       ///< XPOS, 15 bits used, wraps
   std::uint16_t y_pos = 0;       ///< YPOS, 15 bits used, wraps
   std::int16_t th_pos = 0;       ///< THPOS, 4096 per turn
@@ -56,8 +56,10 @@ struct Sip {
   bool motors_enabled() const { return (flags & 1) != 0; }
 };
 
-/// True for a SIP packet type (0x32 or 0x33).
-inline bool is_sip(std::uint8_t type) { return type == 0x32 || type == 0x33; }
+/// True for a standard SIP packet type: 0x3S with S the motor status, 0x32 (stopped) and 0x33
+/// (moving) from P2OS/ARCOS, and 0x30, 0x31, 0x34 as Player's and ROS's p2os drivers also
+/// accept them; the layout is the same.
+inline bool is_sip(std::uint8_t type) { return type >= 0x30 && type <= 0x34; }
 
 /// Decodes a SIP body (type byte first, checksum removed). Throws DecodeError naming the body
 /// offset and the field when the packet is too short or the sonar count runs past the end.
