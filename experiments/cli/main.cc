@@ -2,7 +2,10 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -45,6 +48,21 @@ std::string describe_current_exception() {
   std::_Exit(kExitFailed);
 }
 
+// What the command printed must reach its destination: `cogmap sonar-stats >full-disk/x.txt`
+// exited 0 with an empty or cut file (stdout is buffered, so the error shows only on the last
+// flush, after the command returned). Returns false, with the reason on stderr, when it did not.
+bool stdout_written() {
+  errno = 0;
+  std::cout.flush();  // with sync_with_stdio, fflush(stdout): errno says why it failed
+  const bool failed = std::cout.fail() || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  if (!failed) return true;
+  const int saved = errno;
+  std::cerr << "cogmap: standard output: write failed"
+            << (saved != 0 ? std::string(": ") + std::strerror(saved) : std::string())
+            << " (what was printed is incomplete)\n";
+  return false;
+}
+
 }  // namespace
 
 }  // namespace cogmap::cli
@@ -64,7 +82,8 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
-    return rc == 0 ? kExitOk : kExitBadInput;
+    if (rc == 0) return stdout_written() ? kExitOk : kExitFailed;  // --help, --version
+    return kExitBadInput;
   } catch (const cogmap::yaml::ConfigError& e) {
     std::cerr << "cogmap: " << e.what() << "\n";  // bad input a subcommand did not expect
     return kExitBadInput;
@@ -75,5 +94,6 @@ int main(int argc, char** argv) {
               << " (please report this)\n";
     return kExitFailed;
   }
+  if (!stdout_written() && exit_code == kExitOk) return kExitFailed;
   return exit_code;
 }

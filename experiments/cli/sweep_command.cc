@@ -80,7 +80,13 @@ int merge(const SweepArgs& args) {
     std::string header = experiments::to_csv({merged.header, {}, {}});
     header.pop_back();
     experiments::check_sweep_directory(out, {"results.csv", header, !args.no_plots}, args.force);
-    mapper::io::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
+    try {
+      mapper::io::write_file_atomic(out / "results.csv", experiments::to_csv(merged));
+    } catch (const std::exception& e) {
+      // The inputs were good: a write that fails (a full disk) is exit 1, not bad input (2).
+      std::cerr << "cogmap sweep --merge: " << e.what() << "\n";
+      return kExitFailed;
+    }
     std::cout << "cogmap sweep: merged " << tables.size() << " files, " << merged.rows.size()
               << " runs into " << (out / "results.csv").string() << "\n";
     draw_without_rasteriser_threads_if_cores_are_full(job_count(args.jobs));
@@ -171,7 +177,10 @@ int sweep(const SweepArgs& args) {
     if (options.shard.n == 1) plot(outcome.results, options.out_dir, !args.no_plots, options.jobs);
     return outcome.failures.empty() ? kExitOk : kExitFailed;
   } catch (const std::exception& e) {
-    std::cerr << "cogmap sweep: " << e.what() << "\n";
+    // One line each: the error, then (from run_sweep) the runs that failed before it.
+    std::istringstream lines(e.what());
+    for (std::string line; std::getline(lines, line);)
+      std::cerr << "cogmap sweep: " << line << "\n";
     return kExitFailed;
   }
 }

@@ -261,7 +261,15 @@ SweepOutcome run_sweep(const SweepSpec& spec, const std::vector<PlannedRun>& pla
   for (const SweepAxis& a : spec.vary) keys.push_back(a.key);
   outcome.results = build_results_table(runs, keys, metrics);
   outcome.results_csv = options.out_dir / results_file_name(options.shard);
-  mapper::io::write_file_atomic(outcome.results_csv, to_csv(outcome.results));
+  try {
+    mapper::io::write_file_atomic(outcome.results_csv, to_csv(outcome.results));
+  } catch (const std::exception& e) {
+    // The outcome is lost with the throw: the runs that failed (a full disk fails them too)
+    // must still be named, not only the results file.
+    std::string message = e.what();
+    for (const std::string& f : outcome.failures) message += "\nfailed: " + f;
+    throw std::runtime_error(message);
+  }
   return outcome;
 }
 

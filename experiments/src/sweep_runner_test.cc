@@ -94,6 +94,30 @@ TEST(SweepRunner, ResumesSkippingFinishedRunsAndReportsFailures) {
   EXPECT_EQ(out.results.rows.size(), 3u);  // the failed run has no row
 }
 
+// A results file that cannot be written (a full disk fails the runs too) was the only error
+// shown: the runs' own failures were lost with the outcome.
+TEST(SweepRunner, UnwritableResultsStillNamesTheFailedRuns) {
+  Fixture f = make_fixture("unwritable_results");
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  const auto planned = plan_sweep(f.spec, o);
+  fs::create_directories(o.out_dir / "results.csv" / "in_the_way");  // rename(2) fails over it
+  try {
+    (void)run_sweep(f.spec, planned, o, [](const PlannedRun& p) {
+      if (p.run.index == 3) throw std::runtime_error("No space left on device");
+      fake_run(p);
+    });
+    FAIL() << "expected the results file's write to fail";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("results.csv"), std::string::npos) << what;
+    EXPECT_NE(what.find("failed: mapper.cell_scale_mm=100,seed=2: No space left on device"),
+              std::string::npos)
+        << what;
+  }
+  EXPECT_TRUE(fs::is_directory(o.out_dir / "results.csv" / "in_the_way"));
+}
+
 TEST(SweepRunner, ShardsWriteTheirOwnResultsAndMergeBack) {
   Fixture f = make_fixture("shards");
   std::vector<std::pair<std::string, ResultsTable>> tables;

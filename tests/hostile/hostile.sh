@@ -29,7 +29,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sweep_merge_cwd_results sweep_merge_dev_zero sweep_resume_own_directory
   drive_record_is_the_experiment drive_record_exists drive_duration_nan
   sweep_vary_missing_world sweep_vary_unknown_key sweep_merge_negative_run sweep_merge_text_run
-  experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line)
+  experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line
+  sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -347,6 +348,42 @@ PY
       cmd=("$cogmap" sweep --merge "$d/results.csv" --out "$d/m" --no-plots); want_rc=2
       want_text="results.csv:3: run: '-5' is not a run index (a whole number, 0 or more)"
       check() { [[ ! -e $d/m ]]; } ;;
+    sonar_stats_stdout_full)  # exit 0 with nothing printed: stdout's error shows on its last flush
+      [[ -w /dev/full ]] || { echo "SKIP: no /dev/full"; exit 77; }
+      good_log >"$d/l.log"
+      cmd=(bash -c '"$0" sonar-stats "$1" >/dev/full' "$cogmap" "$d/l.log"); want_rc=1
+      want_text="cogmap: standard output: write failed: No space left on device" ;;
+    world_check_stdout_full)  # the same for a command whose whole answer is on stdout
+      [[ -w /dev/full ]] || { echo "SKIP: no /dev/full"; exit 77; }
+      cmd=(bash -c '"$0" world check "$1" >/dev/full' "$cogmap" "$W/two_rooms.yaml"); want_rc=1
+      want_text="cogmap: standard output: write failed: No space left on device" ;;
+    sweep_merge_write_fails)  # a results file that cannot be written was exit 2 (bad input)
+      # A file size limit of 0 with SIGXFSZ ignored: every write fails (EFBIG), as on a full disk.
+      printf 'run,seed,asr_count\n0,1,2\n' >"$d/results.csv"
+      mkdir "$d/m" && echo "cogmap sweep" >"$d/m/.cogmap-sweep"
+      printf 'run,seed,asr_count\n0,7,7\n' >"$d/m/results.csv"
+      cmd=(bash -c 'trap "" XFSZ; ulimit -f 0; exec "$0" sweep --merge "$1" --out "$2" --no-plots' \
+        "$cogmap" "$d/results.csv" "$d/m"); want_rc=1
+      want_text="cogmap sweep --merge: $d/m/.results.csv.tmp-"
+      check() {  # the previous results file whole, no temp file left
+        [[ $(cat "$d/m/results.csv") == $'run,seed,asr_count\n0,7,7' ]] &&
+          [[ -z $(find "$d/m" -name '.*.tmp-*') ]]
+      } ;;
+    sweep_disk_full)  # a full disk: the results file's error hid why every run had failed
+      [[ $(id -u) -eq 0 ]] || { echo "SKIP: mounting a small tmpfs needs root"; exit 77; }
+      mkdir "$d/fs"
+      mount -t tmpfs -o size=64k tmpfs "$d/fs" 2>/dev/null || { echo "SKIP: mount failed"; exit 77; }
+      trap "umount $(printf '%q' "$d/fs") 2>/dev/null" EXIT  # $d is local: expanded now
+      head -c 60k /dev/zero >"$d/fs/filler"  # one page left: the sweep's marker
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\n' >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/fs/sw" --no-plots); want_rc=1
+      want_text="cogmap sweep: failed: seed=1: "
+      check() {
+        [[ $text == *"results.csv.tmp-"*"No space left on device"* ]] &&
+          [[ ! -e $d/fs/sw/results.csv && ! -e $d/fs/sw/runs/seed=1/metrics.json ]] &&
+          [[ -z $(find "$d/fs" -name '.*.tmp-*') ]]
+      } ;;
     sweep_merge_text_run)  # no line; a quoted field spans two lines, a blank line is skipped
       printf 'run,seed,note\n0,1,"two\nlines"\n\nabc,1,x\n' >"$d/results.csv"
       cmd=("$cogmap" sweep --merge "$d/results.csv" --out "$d/m" --no-plots); want_rc=2
