@@ -10,6 +10,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "bag_test_helpers.h"
 #include "cogmap/hw/bag_import.h"
 #include "corridor_scenario.h"
 
@@ -17,29 +18,15 @@ namespace cogmap::hw {
 namespace {
 
 namespace fs = std::filesystem;
+using bag::testing::expect_contains;
+using bag::testing::import_error;
 using bag::testing::OdomForm;
 using bag::testing::SonarForm;
 using bag::testing::TestBagWriter;
 using bag::testing::Xy;
 
 fs::path temp_bag(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "cogmap_bag_real_world_test";
-  fs::create_directories(dir);
-  return dir / (name + ".bag");
-}
-
-std::string import_error(const fs::path& path, const BagImportOptions& options) {
-  try {
-    import_ros_bag(path, options);
-  } catch (const LogError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << path << " was accepted";
-  return "";
-}
-
-void expect_contains(const std::string& message, const std::string& part) {
-  EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  return bag::testing::temp_bag("cogmap_bag_real_world_test", name);
 }
 
 // The file header as a killed `rosbag record` leaves it (FILE.bag.active): index_pos 0, no

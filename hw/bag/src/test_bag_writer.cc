@@ -168,18 +168,17 @@ void TestBagWriter::close() {
 
 void TestBagWriter::odometry(const std::string& topic, double stamp_s, double x_m, double y_m,
                              double yaw_rad, double record_s) {
-  nav_msgs::Odometry o;
-  o.header.stamp = stamp(stamp_s);
-  o.header.frame_id = "odom";
-  o.child_frame_id = "base_link";
-  o.pose.pose.position.x = x_m;
-  o.pose.pose.position.y = y_m;
-  o.pose.pose.orientation = yaw_quaternion(yaw_rad);
-  impl_->write(topic, stamp(record_s < 0 ? stamp_s : record_s), o);
+  const geometry_msgs::Quaternion q = yaw_quaternion(yaw_rad);
+  write_odometry(topic, stamp_s, x_m, y_m, q.x, q.y, q.z, q.w, record_s);
 }
 
 void TestBagWriter::odometry_quaternion(const std::string& topic, double stamp_s, double x_m,
                                         double y_m, double qx, double qy, double qz, double qw) {
+  write_odometry(topic, stamp_s, x_m, y_m, qx, qy, qz, qw, -1.0);
+}
+
+void TestBagWriter::write_odometry(const std::string& topic, double stamp_s, double x_m, double y_m,
+                                   double qx, double qy, double qz, double qw, double record_s) {
   nav_msgs::Odometry o;
   o.header.stamp = stamp(stamp_s);
   o.header.frame_id = "odom";
@@ -190,7 +189,7 @@ void TestBagWriter::odometry_quaternion(const std::string& topic, double stamp_s
   o.pose.pose.orientation.y = qy;
   o.pose.pose.orientation.z = qz;
   o.pose.pose.orientation.w = qw;
-  impl_->write(topic, stamp(stamp_s), o);
+  impl_->write(topic, stamp(record_s < 0 ? stamp_s : record_s), o);
 }
 
 void TestBagWriter::set_publisher(const std::string& topic, const Publisher& publisher) {

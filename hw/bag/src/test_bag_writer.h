@@ -63,6 +63,8 @@ class TestBagWriter {
   void close();
 
  private:
+  void write_odometry(const std::string& topic, double stamp_s, double x_m, double y_m, double qx,
+                      double qy, double qz, double qw, double record_s);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
