@@ -15,6 +15,7 @@ namespace cogmap::hw {
 namespace {
 
 using namespace std::chrono_literals;
+using testing::frames_for;
 using testing::KinematicBody;
 
 // A served robot on a pty: the server runs in a thread on the master end (through `link`,
@@ -54,18 +55,6 @@ P2osRobotOptions fast_options() {
   return o;
 }
 
-// Collects frames for `duration` of wall time.
-std::vector<mapper::SensorFrame> drive_for(P2osRobot& robot, std::chrono::milliseconds duration) {
-  std::vector<mapper::SensorFrame> frames;
-  const auto end = std::chrono::steady_clock::now() + duration;
-  while (std::chrono::steady_clock::now() < end) {
-    auto f = robot.next_frame();
-    if (!f) break;
-    frames.push_back(std::move(*f));
-  }
-  return frames;
-}
-
 TEST(P2osRobotPty, HandshakeFramesSonarAndCommands) {
   PtyRobot served;
   served.start();
@@ -73,7 +62,7 @@ TEST(P2osRobotPty, HandshakeFramesSonarAndCommands) {
   EXPECT_EQ(robot.identity().subclass, "p2at");
   EXPECT_EQ(robot.identity().klass, "Pioneer");
   robot.command({0.3, 0.0});
-  const auto frames = drive_for(robot, 1500ms);
+  const auto frames = frames_for(robot, 1500ms);
   ASSERT_GE(frames.size(), 10u);
   // Sonar: index and range survive the 0.268 mm unit; transducer 15 reports no echo.
   bool saw_echo = false, saw_no_echo = false;
@@ -98,7 +87,7 @@ TEST(P2osRobotPty, HandshakeFramesSonarAndCommands) {
   EXPECT_NEAR(frames.back().odometry.y_m, 0.0, 0.002);
   // Clamping: far above the P2-AT limits.
   robot.command({5.0, -9.0});
-  drive_for(robot, 400ms);
+  frames_for(robot, 400ms);
   EXPECT_NEAR(served.body().current().v_mps, 0.75, 1e-9);
   EXPECT_NEAR(served.body().current().w_radps, -100.0 * M_PI / 180.0, 1e-9);  // 99.7 -> 100 deg/s
   robot.shutdown();
@@ -128,7 +117,7 @@ TEST(P2osRobotPty, LeftOpenRobotIsClosedAndResynced) {
   P2osRobot robot(served.client(), fast_options());
   EXPECT_GE(robot.stats().left_open_recoveries, 1);
   EXPECT_EQ(robot.identity().subclass, "p2at");
-  EXPECT_GE(drive_for(robot, 600ms).size(), 3u);
+  EXPECT_GE(frames_for(robot, 600ms).size(), 3u);
 }
 
 TEST(P2osRobotPty, KeepAliveNeverLeavesHalfSecondGap) {
@@ -141,7 +130,7 @@ TEST(P2osRobotPty, KeepAliveNeverLeavesHalfSecondGap) {
   {
     P2osRobot robot(open_serial_port(pty->slave_path, 9600), fast_options());
     robot.command({0.2, 0.1});  // one command, then only the keep-alive
-    drive_for(robot, 3000ms);
+    frames_for(robot, 3000ms);
     robot.shutdown();
   }
   stop = true;
@@ -170,7 +159,7 @@ TEST(P2osRobotPty, PositionWrapAcross7FFFKeepsMotion) {
   served.start();
   P2osRobot robot(served.client(), fast_options());
   robot.command({0.75, 0.0});
-  const auto frames = drive_for(robot, 1500ms);
+  const auto frames = frames_for(robot, 1500ms);
   robot.shutdown();
   ASSERT_GE(frames.size(), 10u);
   double prev = frames.front().odometry.x_m;
@@ -196,7 +185,7 @@ TEST(P2osRobotPty, SurvivesOneCorruptedByteInFiveHundred) {
   {
     P2osRobot robot(open_serial_port(pty->slave_path, 9600), fast_options());
     robot.command({0.4, 0.0});
-    frames = drive_for(robot, 6000ms);
+    frames = frames_for(robot, 6000ms);
     stats = robot.stats();
     robot.shutdown();
   }
@@ -223,11 +212,11 @@ TEST(P2osRobotPty, SilentRobotComesBackWithoutLosingMotion) {
   {
     P2osRobot robot(open_serial_port(pty->slave_path, 9600), fast_options());
     robot.command({0.3, 0.0});
-    frames = drive_for(robot, 1000ms);
+    frames = frames_for(robot, 1000ms);
     link.silent = true;
     std::this_thread::sleep_for(3000ms);
     link.silent = false;
-    auto more = drive_for(robot, 2500ms);
+    auto more = frames_for(robot, 2500ms);
     frames.insert(frames.end(), more.begin(), more.end());
     stats = robot.stats();
     robot.shutdown();
@@ -246,9 +235,9 @@ TEST(P2osRobotPty, ControllerResetRebasesOdometryWithoutJump) {
   served.start();
   P2osRobot robot(served.client(), fast_options());
   robot.command({0.3, 0.2});
-  auto frames = drive_for(robot, 1200ms);
+  auto frames = frames_for(robot, 1200ms);
   served.server().request_reset();
-  auto more = drive_for(robot, 2500ms);
+  auto more = frames_for(robot, 2500ms);
   frames.insert(frames.end(), more.begin(), more.end());
   const P2osStats stats = robot.stats();
   robot.shutdown();
@@ -270,7 +259,7 @@ TEST(P2osRobotPty, SubclassP2at8PlusSelectsItsConversionFactors) {
   P2osRobot robot(served.client(), fast_options());
   EXPECT_EQ(robot.identity().subclass, "p2at8+");
   robot.command({0.5, 0.0});
-  const auto frames = drive_for(robot, 1200ms);
+  const auto frames = frames_for(robot, 1200ms);
   robot.shutdown();
   ASSERT_GE(frames.size(), 8u);
   for (const auto& f : frames) {

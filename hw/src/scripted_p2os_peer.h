@@ -203,16 +203,4 @@ inline P2osRobotOptions quick_options(std::vector<std::string>* log = nullptr,
   return o;
 }
 
-inline std::vector<mapper::SensorFrame> frames_for(P2osRobot& robot,
-                                                   std::chrono::milliseconds span) {
-  std::vector<mapper::SensorFrame> frames;
-  const auto end = std::chrono::steady_clock::now() + span;
-  while (std::chrono::steady_clock::now() < end) {
-    auto f = robot.next_frame();
-    if (!f) break;
-    frames.push_back(std::move(*f));
-  }
-  return frames;
-}
-
 }  // namespace cogmap::hw::testing

@@ -10,6 +10,7 @@
 
 #include "cogmap/hw/byte_stream.h"
 #include "cogmap/hw/p2os_packet.h"
+#include "cogmap/hw/p2os_robot.h"
 #include "cogmap/mapper/seam/robot.h"
 
 namespace cogmap::hw::testing {
@@ -145,5 +146,18 @@ class KinematicBody final : public mapper::Robot {
   std::uint64_t cycles_ = 0;
   double distance_m_ = 0.0;
 };
+
+/// The frames `robot` delivers within `span` of wall time (fewer if its session ends).
+inline std::vector<mapper::SensorFrame> frames_for(P2osRobot& robot,
+                                                   std::chrono::milliseconds span) {
+  std::vector<mapper::SensorFrame> frames;
+  const auto end = std::chrono::steady_clock::now() + span;
+  while (std::chrono::steady_clock::now() < end) {
+    auto f = robot.next_frame();
+    if (!f) break;
+    frames.push_back(std::move(*f));
+  }
+  return frames;
+}
 
 }  // namespace cogmap::hw::testing
