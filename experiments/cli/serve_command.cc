@@ -7,6 +7,8 @@
 #include <csignal>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <stop_token>
 #include <thread>
 
 #include "cogmap/experiments/experiment_config.h"
@@ -24,6 +26,46 @@ using namespace std::chrono_literals;
 
 std::atomic<bool> g_stop{false};
 extern "C" void on_stop_signal(int) { g_stop = true; }
+
+// Turns Ctrl-C, SIGTERM and --duration into the server's stop flag, from two threads. Its
+// destructor raises the flag, joins them (std::jthread; they also end on its stop request, so a
+// failed construction joins too) and restores the signals, so an exception thrown while serving
+// unwinds through it to the CLI's report instead of ending in std::terminate (a joinable
+// std::thread destroyed).
+class StopThreads {
+ public:
+  StopThreads(std::atomic<bool>& stop, std::optional<double> duration_s) {
+    g_stop = false;
+    std::signal(SIGINT, on_stop_signal);
+    std::signal(SIGTERM, on_stop_signal);
+    if (duration_s) {
+      timer_ = std::jthread([seconds = *duration_s](std::stop_token quit) {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        while (!g_stop && !quit.stop_requested() && std::chrono::steady_clock::now() < end) {
+          std::this_thread::sleep_for(50ms);
+        }
+        g_stop = true;
+      });
+    }
+    forward_ = std::jthread([&stop](std::stop_token quit) {
+      while (!g_stop && !quit.stop_requested()) std::this_thread::sleep_for(20ms);
+      stop = true;
+    });
+  }
+  StopThreads(const StopThreads&) = delete;
+  StopThreads& operator=(const StopThreads&) = delete;
+  ~StopThreads() {
+    g_stop = true;
+    forward_ = {};  // joins
+    timer_ = {};
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+  }
+
+ private:
+  std::jthread timer_;
+  std::jthread forward_;
+};
 
 struct ServeArgs {
   std::string experiment;
@@ -65,24 +107,8 @@ int serve(const ServeArgs& args) {
     body.set_sonar_polling(array, sequence);
   };
 
-  g_stop = false;
-  std::signal(SIGINT, on_stop_signal);
-  std::signal(SIGTERM, on_stop_signal);
   std::atomic<bool> stop{false};
-  // --duration: a watchdog thread raises the same flag Ctrl-C does.
-  std::thread timer;
-  if (args.duration_s) {
-    timer = std::thread([&] {
-      const auto end =
-          std::chrono::steady_clock::now() + std::chrono::duration<double>(*args.duration_s);
-      while (!g_stop && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(50ms);
-      g_stop = true;
-    });
-  }
-  std::thread forward([&] {
-    while (!g_stop) std::this_thread::sleep_for(20ms);
-    stop = true;
-  });
+  const StopThreads stop_threads(stop, args.duration_s);
   int code = kExitOk;
   try {
     if (args.pty) {
@@ -114,11 +140,6 @@ int serve(const ServeArgs& args) {
     std::cerr << "cogmap serve: " << e.what() << "\n";
     code = kExitFailed;
   }
-  g_stop = true;
-  forward.join();
-  if (timer.joinable()) timer.join();
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
   return code;
 }
 
