@@ -357,11 +357,19 @@ Experiment parse_with_overrides(Node root, const std::filesystem::path& file,
     }
   }
   if (seed_override) root.raw()["seed"] = *seed_override;
+  Experiment experiment;
   try {
-    return parse_experiment(root, file);
+    experiment = parse_experiment(root, file);
   } catch (const ConfigError& e) {
     rethrow_with_override(e, root.raw(), overrides);
   }
+  // The world file is read later (by the run): its errors name the `world` key where the file
+  // wrote it and the override that set it, as parse errors do.
+  if (const Cause cause = override_of("world", overrides); cause.override_text) {
+    experiment.world_line = written_line(root.raw(), "world");
+    experiment.world_override = shown(*cause.override_text);
+  }
+  return experiment;
 }
 
 }  // namespace

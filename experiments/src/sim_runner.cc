@@ -25,7 +25,9 @@ sim::WorldSpec load_world_of(const Experiment& experiment) {
   } catch (const yaml::ConfigError& e) {
     if (e.line() > 0 || e.file() != experiment.world.string()) throw;
     throw yaml::ConfigError(experiment.file.string(), experiment.world_line, "world",
-                            "world file " + experiment.world.string() + ": " + bare_message(e));
+                            "world file " + experiment.world.string() + ": " + bare_message(e) +
+                                (experiment.world_override.empty() ? "" : " ") +
+                                experiment.world_override);
   }
 }
 

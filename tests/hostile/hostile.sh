@@ -30,7 +30,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   drive_record_is_the_experiment drive_record_exists drive_duration_nan
   sweep_vary_missing_world sweep_vary_unknown_key sweep_merge_negative_run sweep_merge_text_run
   experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line
-  sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full)
+  sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
+  run_set_missing_world)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -338,6 +339,11 @@ PY
       cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw" --no-plots); want_rc=2
       want_text="s.sweep.yaml:6: vary.world[1]: world file $d/missing.yaml: cannot open file"
       check() { [[ ! -e $d/sw ]]; } ;;
+    run_set_missing_world)  # named e.yaml:1 (the --set value's own line), not the override
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --set world=missing.yaml --out "$d/o"); want_rc=2
+      want_text="e.yaml:2: world: world file $d/missing.yaml: cannot open file (from --set world=missing.yaml)"
+      check() { [[ ! -e $d/o ]]; } ;;
     sweep_vary_unknown_key)  # named e.yaml, not the sweep's line
       short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
       printf 'base: e.yaml\nseeds: [1]\nvary:\n  mapper.gridd:\n    - himm\n' >"$d/s.sweep.yaml"

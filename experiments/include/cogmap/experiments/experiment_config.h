@@ -73,6 +73,7 @@ struct Experiment {
   std::string name;             ///< `name`
   std::filesystem::path world;  ///< `world`, resolved against the experiment file's folder
   int world_line = 0;           ///< line of the `world` key (errors about the world file)
+  std::string world_override;   ///< "(from --set world=...)" when an override set it, else ""
   std::uint64_t seed = 1;       ///< `seed` (or --seed)
   double duration_s = 600.0;    ///< `duration_s`: upper bound of simulated (or real) time
   /// `start` {x_m, y_m, theta_deg}: replaces the world's start pose (e.g. to map only some
