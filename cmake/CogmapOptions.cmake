@@ -31,10 +31,13 @@ endfunction()
 
 # cogmap_add_test(NAME name SOURCES ... LIBS ...): one GoogleTest executable, registered with ctest.
 # PROPERTIES ... are added to every discovered test's properties (e.g. RUN_SERIAL TRUE).
+# Every test may include tests/support (cogmap/test_support/scratch_dir.h: scratch folders).
 function(cogmap_add_test)
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;LIBS;PROPERTIES" ${ARGN})
   add_executable(${ARG_NAME} ${ARG_SOURCES})
   cogmap_target_defaults(${ARG_NAME})
+  target_include_directories(${ARG_NAME}
+                             PRIVATE ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../tests/support)
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
   gtest_discover_tests(${ARG_NAME} DISCOVERY_TIMEOUT 60
                        PROPERTIES ENVIRONMENT "COGMAP_SOURCE_DIR=${PROJECT_SOURCE_DIR}"

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cogmap/experiments/experiment_config.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::experiments::test {
 
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 
 inline fs::path write_temp(const std::string& name, const std::string& text) {
   // One directory per test: ctest runs the tests of this file as parallel processes.
-  const fs::path dir = fs::path(::testing::TempDir()) / "experiment_config_test" /
+  const fs::path dir = test_support::process_scratch() / "experiment_config_test" /
                        ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   const fs::path p = dir / name;

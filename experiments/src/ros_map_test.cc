@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "cogmap/test_support/scratch_dir.h"
+
 namespace cogmap::experiments {
 namespace {
 
@@ -39,7 +41,7 @@ TEST(RosMap, YamlIsMapServerConvention) {
 }
 
 TEST(RosMap, WritesBothFiles) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / "ros_map_test";
+  const auto dir = test_support::process_scratch() / "ros_map_test";
   mapper::HistogramGrid g(mapper::GridGeometry(0, 0, 100.0, 2, 2), 0.0f);
   write_ros_map(g, 7.0, dir, "grid_000");
   std::ifstream pgm(dir / "grid_000.pgm", std::ios::binary);
@@ -67,7 +69,7 @@ TEST(RosMap, ExploreMapPgmAndYaml) {
                                std::string{'\xa0', '\x64', '\xcd'} +  // y = 1: 160, 100, 205
                                std::string{'\xcd', '\xfe', '\x00'};   // y = 0: 205, 254, 0
   EXPECT_EQ(explore_map_pgm(image), expected);
-  const auto dir = std::filesystem::path(::testing::TempDir()) / "explore_map_test";
+  const auto dir = test_support::process_scratch() / "explore_map_test";
   write_explore_map(image, dir);
   std::ifstream pgm(dir / "explore_map.pgm", std::ios::binary), yaml(dir / "explore_map.yaml");
   std::stringstream p, y;

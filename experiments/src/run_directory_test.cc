@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "cogmap/mapper/io/asr_json.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -15,10 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / "run_directory_test" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
+  return test_support::fresh_scratch(fs::path("run_directory_test") / name);
 }
 
 void write(const fs::path& p, const std::string& text) {

@@ -8,6 +8,7 @@
 
 #include "cogmap/experiments/sweep_plots.h"
 #include "cogmap/mapper/io/asr_json.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -21,9 +22,7 @@ struct Fixture {
 
 Fixture make_fixture(const std::string& name) {
   Fixture f;
-  f.dir = fs::path(::testing::TempDir()) / ("sweep_runner_test_" + name);
-  fs::remove_all(f.dir);
-  fs::create_directories(f.dir);
+  f.dir = test_support::fresh_scratch("sweep_runner_test_" + name);
   std::ofstream(f.dir / "base.yaml") << "name: base\nworld: w.yaml\n";
   // plan_sweep loads each run's world: a square room.
   std::ofstream(f.dir / "w.yaml")

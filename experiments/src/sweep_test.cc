@@ -6,6 +6,7 @@
 #include <set>
 
 #include "cogmap/sim/yaml_strict.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -14,7 +15,7 @@ namespace fs = std::filesystem;
 
 fs::path write_temp(const std::string& name, const std::string& text) {
   // One directory per test: ctest runs the tests of this file as parallel processes.
-  const fs::path dir = fs::path(::testing::TempDir()) / "sweep_test" /
+  const fs::path dir = test_support::process_scratch() / "sweep_test" /
                        ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   std::ofstream(dir / name) << text;

@@ -12,6 +12,7 @@
 #include "cogmap/hw/log_import.h"
 #include "cogmap/hw/log_robot.h"
 #include "cogmap/hw/robot_log.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::hw {
 namespace {
@@ -25,7 +26,7 @@ const std::string kHeader =
 
 fs::path write_log(const std::string& name, const std::string& text) {
   // One folder per test: ctest -j runs the tests of this file in parallel processes.
-  const fs::path dir = fs::path(::testing::TempDir()) / "log_checks_test" /
+  const fs::path dir = test_support::process_scratch() / "log_checks_test" /
                        ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   std::ofstream(dir / name, std::ios::binary) << text;

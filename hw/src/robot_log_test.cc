@@ -9,6 +9,7 @@
 #include "cogmap/hw/log_import.h"
 #include "cogmap/hw/log_robot.h"
 #include "cogmap/mapper/seam/fake_robot.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::hw {
 namespace {
@@ -17,11 +18,7 @@ namespace fs = std::filesystem;
 
 fs::path testdata(const std::string& name) { return fs::path(COGMAP_HW_TESTDATA) / name; }
 
-fs::path temp_file(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("cogmap_hw_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path temp_file(const std::string& name) { return test_support::process_scratch() / name; }
 
 void write_file(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 

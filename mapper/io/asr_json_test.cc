@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
@@ -12,20 +11,15 @@
 
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/mapper/io/directory_asr_store.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::mapper::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh, empty directory under the build's temp dir for one test.
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("cogmap_io_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+/// A fresh, empty directory for one test, removed with the process's scratch.
+fs::path fresh_dir(const std::string& name) { return test_support::fresh_scratch(name); }
 
 /// An ASR whose every field holds a value with all 53 bits of mantissa in use.
 Asr sample_asr(int id) {

@@ -2,7 +2,6 @@
 // Helpers shared by the renderer's tests: a scratch directory and pixel predicates.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -10,24 +9,16 @@
 
 #include "cogmap/render/image.h"
 #include "cogmap/render/style.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::render::testing {
 
-// A fresh directory per test, removed afterwards.
-class TempDir {
+// A fresh directory per test, removed afterwards unless the test failed.
+class TempDir : public cogmap::test_support::ScratchDir {
  public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("cogmap_render_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() { std::filesystem::remove_all(path_); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
+  TempDir()
+      : ScratchDir("cogmap_render_" +
+                   std::string(::testing::UnitTest::GetInstance()->current_test_info()->name())) {}
 };
 
 inline bool is_white(const Rgba8& p) { return p.r == 255 && p.g == 255 && p.b == 255; }

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cogmap/test_support/scratch_dir.h"
 #include "corridor_scenario.h"
 
 namespace {
@@ -37,12 +38,7 @@ CliRun cli(const std::string& args, const fs::path& log) {
   return r;
 }
 
-fs::path work_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "cogmap_bag_replay" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path work_dir(const std::string& name) { return cogmap::test_support::fresh_scratch(name); }
 
 // Distances of points every 5 cm along the map's segments to the nearer corridor wall, and the
 // mapped length on the left (y > 0) and right wall.

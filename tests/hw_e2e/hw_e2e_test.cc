@@ -21,6 +21,7 @@
 #include "cogmap/sim/sim_robot.h"
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap {
 namespace {
@@ -34,8 +35,7 @@ fs::path source_dir() {
 }
 
 fs::path out_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("cogmap_hw_e2e_" + std::to_string(::getpid())) / name;
+  const fs::path d = test_support::process_scratch() / name;
   fs::create_directories(d);
   return d;
 }

@@ -14,6 +14,7 @@
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/runner.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -40,7 +41,7 @@ TEST_P(RouteSmoke, CompletesTheRouteWithinTheTimeLimit) {
   const RouteCase& c = GetParam();
   const Experiment e = load_experiment(source_dir() / "experiments" / (c.experiment + ".yaml"));
   RunOptions o;
-  o.out_dir = fs::path(::testing::TempDir()) / ("route_smoke_" + c.experiment);
+  o.out_dir = test_support::process_scratch() / ("route_smoke_" + c.experiment);
   o.figures = false;
   fs::remove_all(o.out_dir);
   (void)run_experiment(e, o);

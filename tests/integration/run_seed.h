@@ -1,6 +1,6 @@
 #pragma once
 /// One seed of an experiment through the real simulator, mapper and runner, figures off, in a
-/// fresh directory under the test's temporary directory; its metrics.json, parsed.
+/// fresh directory in the process's scratch folder; its metrics.json, parsed.
 
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/runner.h"
+#include "cogmap/test_support/scratch_dir.h"
 #include "source_dir.h"
 
 namespace cogmap::integration {
@@ -19,7 +20,7 @@ inline nlohmann::json run_seed_metrics(experiments::Experiment e, std::uint64_t 
                                        const std::string& tag) {
   e.seed = seed;
   experiments::RunOptions o;
-  o.out_dir = std::filesystem::path(::testing::TempDir()) / tag;
+  o.out_dir = test_support::process_scratch() / tag;
   o.figures = false;
   std::filesystem::remove_all(o.out_dir);
   (void)experiments::run_experiment(e, o);

@@ -17,6 +17,7 @@
 #include "cogmap/sim/sim_robot.h"
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -60,7 +61,7 @@ fs::path run(bool scramble, const std::string& pose = "estimate",
   ScrambledTruth scrambled(sim);
   const GroundTruth truth{sim::true_surfaces(world), world.start};
   RunOptions o;
-  o.out_dir = fs::path(::testing::TempDir()) /
+  o.out_dir = test_support::process_scratch() /
               ((scramble ? "truth_scrambled_" : "truth_plain_") + experiment + "_" + pose);
   o.figures = false;
   fs::remove_all(o.out_dir);

@@ -12,6 +12,7 @@
 
 #include "cogmap/experiments/experiment_config.h"
 #include "cogmap/experiments/runner.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -27,7 +28,7 @@ Json run_once(const std::string& name, int sonar_threads = 1) {
   const Experiment e = load_experiment(source_dir() / "experiments" / "two_rooms.yaml");
   RunOptions o;
   o.sonar_threads = sonar_threads;
-  o.out_dir = fs::path(::testing::TempDir()) / ("two_rooms_" + name);
+  o.out_dir = test_support::process_scratch() / ("two_rooms_" + name);
   o.figures = false;
   fs::remove_all(o.out_dir);
   (void)run_experiment(e, o);
@@ -36,7 +37,7 @@ Json run_once(const std::string& name, int sonar_threads = 1) {
 
 TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
   const Json a = run_once("a");
-  const fs::path dir = fs::path(::testing::TempDir()) / "two_rooms_a";
+  const fs::path dir = test_support::process_scratch() / "two_rooms_a";
   for (const char* f : {"metrics.json", "trajectory.csv", "asr_graph.json", "map.svg",
                         "map_segments.csv", "map_segments_odom.csv", "experiment.yaml",
                         "grid_000.pgm", "grid_000.yaml", "asrs/000.json"}) {
@@ -99,7 +100,7 @@ TEST(TwoRoomsEndToEnd, WritesEveryOutputWithinBoundsAndDeterministically) {
                           "rooms", "readings", "frames"}) {
     EXPECT_EQ(a[key].dump(), b[key].dump()) << key;
   }
-  const fs::path dir_b = fs::path(::testing::TempDir()) / "two_rooms_b";
+  const fs::path dir_b = test_support::process_scratch() / "two_rooms_b";
   EXPECT_EQ(read_file(dir / "trajectory.csv"), read_file(dir_b / "trajectory.csv"));
   EXPECT_EQ(read_file(dir / "map_segments.csv"), read_file(dir_b / "map_segments.csv"));
 }

@@ -5,12 +5,13 @@
 #include <numbers>
 
 #include "aria_map.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::peers {
 namespace {
 
 std::filesystem::path write(const std::string& name, const std::string& text) {
-  const auto p = std::filesystem::temp_directory_path() / name;
+  const auto p = test_support::process_scratch() / name;
   std::ofstream(p) << text;
   return p;
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "bag_test_helpers.h"
 #include "cogmap/hw/bag_import.h"
 #include "cogmap/mapper/seam/robot_models.h"
 #include "corridor_scenario.h"
@@ -19,9 +20,7 @@ using bag::testing::OdomForm;
 using bag::testing::SonarForm;
 
 fs::path temp_bag(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "cogmap_bag_test";
-  fs::create_directories(dir);
-  return dir / (name + ".bag");
+  return bag::testing::temp_bag("cogmap_bag_test", name);
 }
 
 ImportedBag import_corridor(SonarForm sonar, OdomForm odom, const std::string& name) {

@@ -7,12 +7,13 @@
 #include <string>
 
 #include "cogmap/hw/bag_import.h"
+#include "cogmap/test_support/scratch_dir.h"
 
 namespace cogmap::hw::bag::testing {
 
-/// DIR/NAME.bag under the system's temporary folder, DIR created.
+/// DIR/NAME.bag in the process's scratch folder (removed when the tests pass), DIR created.
 inline std::filesystem::path temp_bag(const std::string& dir, const std::string& name) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / dir;
+  const std::filesystem::path folder = test_support::process_scratch() / dir;
   std::filesystem::create_directories(folder);
   return folder / (name + ".bag");
 }
