@@ -113,7 +113,8 @@ TEST(TruthBlind, ScramblingTheTruePoseChangesOnlyTruthMetrics) {
     (*m)["nav"].erase("heading_drift_deg_by_mode");  // odometry against the truth
   }
   EXPECT_EQ(ma.dump(), mb.dump());
-  EXPECT_GT(ma["nav"]["distance_m"].get<double>(), 5.0);  // it did drive
+  // It did drive: the whole route, 18.85 m (2026-12-06; bound 0.8x), not the first metres.
+  EXPECT_GT(ma["nav"]["distance_m"].get<double>(), 15.0);
 }
 
 TEST(TruthBlind, TheExplorersOwnMapIgnoresTheTruth) {
@@ -122,7 +123,8 @@ TEST(TruthBlind, TheExplorersOwnMapIgnoresTheTruth) {
   const fs::path b = run(true, "estimate", "explore_two_rooms", map);
   const std::string pgm = read_file(a / "explore_map.pgm");
   EXPECT_EQ(pgm.rfind("P5\n", 0), 0u);
-  EXPECT_GT(pgm.size(), 1000u);  // a map of the first room at least
+  // A map of the first room at least: 10419 bytes in the 60 s (2026-12-06; bound 0.8x).
+  EXPECT_GT(pgm.size(), 8300u);
   EXPECT_EQ(pgm, read_file(b / "explore_map.pgm"));
   EXPECT_EQ(read_file(a / "explore_map.yaml"), read_file(b / "explore_map.yaml"));
   // A route follower has no explore map: nothing is written for it.
