@@ -5,15 +5,32 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
 #include "cogmap/hw/robot_log.h"
 
+namespace {
+
+// One file per process, rewritten for every input (tmpfs when /dev/shm exists) and removed when
+// the fuzzer exits (a crash leaves it; libFuzzer saves the crashing input itself).
+const std::string& scratch_path() {
+  // Never destroyed: the exit handler reads it after static destructors may have run.
+  static const std::string* path = [] {
+    auto* p = new std::string((access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp") +
+                              std::string("/cogmap_log_fuzz_") + std::to_string(getpid()));
+    std::atexit([] { std::remove(scratch_path().c_str()); });
+    return p;
+  }();
+  return *path;
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  // One file per process, rewritten for every input (tmpfs when /dev/shm exists).
-  static const std::string path = (access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp") +
-                                  std::string("/cogmap_log_fuzz_") + std::to_string(getpid());
+  const std::string& path = scratch_path();
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
