@@ -13,8 +13,6 @@ namespace {
 
 constexpr double kMotionEpsilon = 1e-3;  // |v| in m/s or |w| in rad/s that counts as moving
 
-double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
-
 }  // namespace
 
 NavCore::NavCore(const CoreOptions& options)

@@ -5,11 +5,6 @@
 #include <numbers>
 
 namespace cogmap::mapper::nav {
-namespace {
-
-double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
-
-}  // namespace
 
 void StuckRecovery::rearm(double time_s, const Pose2& pose) {
   armed_ = true;

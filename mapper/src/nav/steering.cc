@@ -6,11 +6,6 @@
 #include <numbers>
 
 namespace cogmap::mapper::nav {
-namespace {
-
-double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
-
-}  // namespace
 
 double clearance_m(const std::vector<ObstaclePoint>& obstacles, double heading_rad,
                    double half_angle_rad, double length_m) {

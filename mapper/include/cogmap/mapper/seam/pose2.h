@@ -2,6 +2,7 @@
 /// A planar pose (SE(2)): position in metres and heading in radians, counter-clockwise.
 
 #include <cmath>
+#include <numbers>
 
 #include "cogmap/mapper/seam/geometry.h"
 
@@ -9,6 +10,9 @@ namespace cogmap::mapper {
 
 /// Wraps an angle to (-π, π].
 double wrap_angle_rad(double angle_rad);
+
+/// Degrees (options, docs) to radians (everything computed).
+constexpr double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
 
 /// Pose of a frame B in a frame A: a point p_B maps to p_A = R(theta) p_B + (x, y).
 struct Pose2 {
