@@ -86,6 +86,12 @@ void check_record_path(const DriveArgs& args, const experiments::Experiment& exp
   check_output_file(args.record, "--record", inputs, args.force);
 }
 
+// Bytes from the robot side that never decode are bad input (exit 2, the message names their
+// stream offsets); silence, a closed link or an unsupported robot is a failed run (exit 1).
+int exit_code_for(hw::P2osFailureKind kind) {
+  return kind == hw::P2osFailureKind::kBadBytes ? kExitBadInput : kExitFailed;
+}
+
 int drive(const DriveArgs& args) {
   if (args.port.empty() == args.tcp.empty()) {
     std::cerr << "cogmap drive: give exactly one of --port DEV or --tcp HOST:PORT\n";
@@ -172,7 +178,10 @@ int drive(const DriveArgs& args) {
   std::unique_ptr<hw::P2osRobot> robot;
   try {
     robot = std::make_unique<hw::P2osRobot>(std::move(stream), robot_options);
-  } catch (const hw::StreamError& e) {
+  } catch (const hw::P2osHandshakeError& e) {
+    std::cerr << "cogmap drive: " << e.what() << "\n";
+    return exit_code_for(e.kind());
+  } catch (const hw::StreamError& e) {  // the link failed under the handshake (closed, I/O)
     std::cerr << "cogmap drive: " << e.what() << "\n";
     return kExitFailed;
   }
@@ -218,8 +227,11 @@ int drive(const DriveArgs& args) {
   std::cerr << "cogmap drive: " << s.sips << " SIPs, " << s.dropped_bytes << " bytes dropped, "
             << s.connections - 1 << " reconnections\n";
   if (!robot->failure().empty() && code == kExitOk && !g_interrupted) {
-    std::cerr << "cogmap drive: connection lost: " << robot->failure() << "\n";
-    code = kExitFailed;
+    const bool bad_bytes = robot->failure_kind() == hw::P2osFailureKind::kBadBytes;
+    std::cerr << "cogmap drive: "
+              << (bad_bytes ? "bad bytes from the robot side: " : "connection lost: ")
+              << robot->failure() << "\n";
+    code = exit_code_for(robot->failure_kind());
   }
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);

@@ -33,6 +33,30 @@ std::string printable(const std::string& text) {
   }
   return out;
 }
+
+// A decoder discard as "N bytes at stream offsets A-B: reason". Runs of bytes without a header
+// merge into one event, so its start can lie well before the bytes that were just read.
+std::string describe(const p2os::DropEvent& d) {
+  if (d.count == 1) return "1 byte at stream offset " + std::to_string(d.offset) + ": " + d.reason;
+  return std::to_string(d.count) + " bytes at stream offsets " + std::to_string(d.offset) + "-" +
+         std::to_string(d.offset + d.count - 1) + ": " + d.reason;
+}
+
+// What arrived from stream offset `from` on without forming a packet, with the decoder's latest
+// discard: the offsets let a user find the bytes in a capture of the link.
+std::string undecodable_since(const p2os::PacketDecoder& decoder, std::uint64_t from) {
+  const std::uint64_t to = decoder.offset();
+  std::string text = std::to_string(to - from) + " bytes arrived (stream offsets " +
+                     std::to_string(from) + "-" + std::to_string(to - 1) +
+                     ") and none formed a packet";
+  if (!decoder.drops().empty()) {
+    const p2os::DropEvent& d = decoder.drops().back();
+    if (d.offset + d.count > from) {
+      text += "; the last discard: " + describe(d);
+    }
+  }
+  return text;
+}
 }  // namespace
 
 P2osRobot::P2osRobot(std::unique_ptr<ByteStream> stream, P2osRobotOptions options)
@@ -42,7 +66,8 @@ P2osRobot::P2osRobot(std::unique_ptr<ByteStream> stream, P2osRobotOptions option
       stall_guard_(options_.partial_packet_timeout) {
   start_ = Clock::now();
   if (!handshake()) {
-    throw StreamError(stream_->name() + ": P2OS handshake failed: " + failure_);
+    throw P2osHandshakeError(stream_->name() + ": P2OS handshake failed: " + failure_,
+                             failure_kind_);
   }
   thread_ = std::thread([this] { io_loop(); });
 }
@@ -63,7 +88,15 @@ void P2osRobot::receive(milliseconds timeout) {
   // off in the middle must not hide the packets behind it.
   std::uint8_t buf[512];
   const std::size_t n = stream_->read(buf, stall_guard_.cap(decoder_, Clock::now(), timeout));
+  note_drops();  // what the last next() calls discarded, also while a handshake runs
   if (n > 0) decoder_.feed({buf, n});
+}
+
+void P2osRobot::note_drops() {
+  std::lock_guard lock(mutex_);
+  if (stats_.dropped_bytes == decoder_.dropped_bytes()) return;
+  stats_.dropped_bytes = decoder_.dropped_bytes();
+  if (!decoder_.drops().empty()) last_drop_ = decoder_.drops().back();
 }
 
 std::optional<p2os::Packet> P2osRobot::read_packet(milliseconds timeout) {
@@ -95,23 +128,35 @@ bool P2osRobot::handshake() {
     bool restart = false;
     // Each step has one deadline, however many other packets arrive meanwhile.
     auto step_deadline = std::min(give_up, Clock::now() + options_.sync_reply_timeout);
+    std::uint64_t step_from = decoder_.offset();  // bytes fed from here on belong to this step
+    bool step_packet = false;                     // a packet (of any type) framed in this step
     while (step < 3 && !restart) {
       const auto left = std::chrono::duration_cast<milliseconds>(step_deadline - Clock::now());
       const auto packet = left.count() > 0 ? read_packet(left) : std::nullopt;
       if (!packet) {
-        if (!noted) {
-          last_problem = "no reply to SYNC" + std::to_string(step) + " within " +
-                         std::to_string(options_.sync_reply_timeout.count()) + " ms";
+        const std::string no_reply = "no reply to SYNC" + std::to_string(step) + " within " +
+                                     std::to_string(options_.sync_reply_timeout.count()) + " ms";
+        if (!step_packet && decoder_.offset() > step_from) {
+          // Not silence: bytes came, none framed (a wrong baud rate, a device that is no P2OS).
+          last_problem = garbage_problem_ =
+              no_reply + ": " + undecodable_since(decoder_, step_from);
+          ++garbage_attempts_;
+        } else {
+          if (!noted) last_problem = no_reply;
+          // Packets came, just not the reply: a P2OS peer is there. Silence counts for neither.
+          if (step_packet) ++answered_attempts_;
         }
         restart = true;  // no echo in time: start again from SYNC0
         break;
       }
+      step_packet = true;
       const std::uint8_t type = packet->type();
       if (p2os::is_sip(type)) {
         // The robot was left open by an earlier client: close it and sync from scratch.
         last_problem = "a SIP during sync at stream offset " + std::to_string(packet->offset) +
                        " (the robot was left open; CLOSE sent)";
         log(stream_->name() + ": SIP during sync, robot was left open: sending CLOSE");
+        ++answered_attempts_;
         send(p2os::encode_command(Command::kClose));
         {
           std::lock_guard lock(mutex_);
@@ -146,6 +191,7 @@ bool P2osRobot::handshake() {
                                model->name != mapper::find_robot_model(identity_.subclass)->name;
           if (!factors || !model || changed) {
             std::lock_guard lock(mutex_);
+            failure_kind_ = P2osFailureKind::kUnsupportedRobot;
             failure_ = "robot '" + printable(id.name) + "' is a " + printable(id.klass) + " '" +
                        printable(id.subclass) + "', " +
                        (changed ? "not the " + printable(identity_.subclass) + " connected before"
@@ -161,7 +207,9 @@ bool P2osRobot::handshake() {
         } catch (const p2os::DecodeError& e) {
           last_problem = "bad SYNC2 reply at stream offset " + std::to_string(packet->offset) +
                          ": " + e.what();
+          garbage_problem_ = last_problem;
           log(stream_->name() + ": " + last_problem);
+          ++garbage_attempts_;  // framed and checksummed, but the reply itself is garbage
           restart = true;
           break;
         }
@@ -169,6 +217,8 @@ bool P2osRobot::handshake() {
       ++step;
       if (step < 3) send(p2os::encode_command(static_cast<Command>(step)));
       step_deadline = std::min(give_up, Clock::now() + options_.sync_reply_timeout);
+      step_from = decoder_.offset();
+      step_packet = false;
     }
     if (step == 3) {
       send(p2os::encode_command(Command::kOpen));
@@ -187,10 +237,16 @@ bool P2osRobot::handshake() {
   std::lock_guard lock(mutex_);
   const auto spent = std::chrono::duration_cast<milliseconds>(
       Clock::now() - (give_up - options_.handshake_timeout));
+  // Bad input when, since the link was (re)opened, only undecodable bytes came back (silence
+  // aside): a robot that answered at all, even wrongly, or never sent a byte is a lost link.
+  const bool bad_bytes = garbage_attempts_ > 0 && answered_attempts_ == 0;
+  failure_kind_ = bad_bytes ? P2osFailureKind::kBadBytes : P2osFailureKind::kLink;
+  if (bad_bytes) last_problem = garbage_problem_;  // the offsets, not a silent last attempt
   failure_ = "no complete SYNC0-2 exchange in " + std::to_string(attempts) + " attempts, " +
              std::to_string(spent.count()) + " ms (limits " +
              std::to_string(options_.sync_attempts) + " attempts, " +
              std::to_string(options_.handshake_timeout.count()) + " ms)";
+  if (bad_bytes) failure_ += "; only bytes that do not decode as P2OS came back";
   if (!last_problem.empty()) failure_ += "; last: " + last_problem;
   return false;
 }
@@ -202,9 +258,9 @@ void P2osRobot::handle_sip(const p2os::Packet& packet) {
   } catch (const p2os::DecodeError& e) {
     ++bad_since_sip_;
     last_bad_sip_ = Clock::now();
+    std::lock_guard lock(mutex_);
     last_bad_sip_reason_ =
         "SIP at stream offset " + std::to_string(packet.offset) + ": " + e.what();
-    std::lock_guard lock(mutex_);
     ++stats_.bad_sips;
     if (stats_.bad_sips <= kLoggedBadSips || stats_.bad_sips % 1000 == 0) {
       log(stream_->name() + ": " + last_bad_sip_reason_ +
@@ -304,9 +360,10 @@ void P2osRobot::io_loop() {
           {
             std::lock_guard lock(mutex_);
             failure_.clear();
+            failure_kind_ = P2osFailureKind::kNone;
           }
         } else if (Clock::now() - reconnect_since > options_.reconnect_give_up) {
-          std::lock_guard lock(mutex_);
+          std::lock_guard lock(mutex_);  // failure_kind_ as the handshakes judged it
           failure_ = "reconnection gave up: " + failure_;
           break;
         }
@@ -327,15 +384,13 @@ void P2osRobot::io_loop() {
           }
         }
       } while (stall_guard_.check(decoder_, Clock::now()));
-      {
-        std::lock_guard lock(mutex_);
-        stats_.dropped_bytes = decoder_.dropped_bytes();
-      }
+      note_drops();
       if (!reconnecting && Clock::now() - last_sip_ > options_.silence_timeout) {
         if (bad_since_sip_ >= 3 && Clock::now() - last_bad_sip_ < options_.silence_timeout / 2) {
           // Not silent: SIPs keep coming but none parses. A reconnection would only bring more
           // of them (and once reconnected, failure() was empty and the run ended "fine").
           std::lock_guard lock(mutex_);
+          failure_kind_ = P2osFailureKind::kBadBytes;
           failure_ = "no SIP could be decoded for " +
                      std::to_string(options_.silence_timeout.count()) +
                      " ms: " + std::to_string(bad_since_sip_) +
@@ -350,6 +405,8 @@ void P2osRobot::io_loop() {
       }
       if (reconnecting) {
         reconnect_since = Clock::now();
+        garbage_attempts_ = answered_attempts_ = 0;  // judge what this reconnection gets
+        garbage_problem_.clear();
         continue;
       }
       bool dirty;
@@ -367,16 +424,22 @@ void P2osRobot::io_loop() {
     }
   } catch (const StreamError& e) {
     std::lock_guard lock(mutex_);
-    failure_ = e.what();
+    failure_ = e.what();  // closed by the peer, or an I/O error: the link, not its bytes
+    failure_kind_ = P2osFailureKind::kLink;
   }
   std::lock_guard lock(mutex_);
   finished_ = true;
-  if (failure_.empty() && !stopping_) failure_ = "connection ended";
+  if (failure_.empty() && !stopping_) {
+    failure_ = "connection ended";
+    failure_kind_ = P2osFailureKind::kLink;
+  }
   cv_.notify_all();
 }
 
 std::optional<mapper::SensorFrame> P2osRobot::next_frame() {
   std::unique_lock lock(mutex_);
+  const std::uint64_t dropped_before = stats_.dropped_bytes;
+  const std::uint64_t bad_sips_before = stats_.bad_sips;
   cv_.wait_for(lock, options_.frame_wait, [&] { return !frames_.empty() || finished_; });
   if (frames_.empty()) {
     if (!finished_ && !stopping_ && wait_expired_.empty()) {
@@ -387,6 +450,17 @@ std::optional<mapper::SensorFrame> P2osRobot::next_frame() {
                       std::to_string(stats_.connections) + " handshakes, " +
                       std::to_string(stats_.sips) + " SIPs, " + std::to_string(stats_.bad_sips) +
                       " undecodable)";
+      // Bytes that did not decode came instead of SIPs (SIPs with bad checksums, noise after
+      // every handshake): bad input, not a silent robot.
+      const std::uint64_t dropped = stats_.dropped_bytes - dropped_before;
+      const std::uint64_t bad_sips = stats_.bad_sips - bad_sips_before;
+      wait_expired_kind_ =
+          dropped + bad_sips > 0 ? P2osFailureKind::kBadBytes : P2osFailureKind::kLink;
+      if (dropped > 0) {
+        wait_expired_ += "; meanwhile " + std::to_string(dropped) +
+                         " bytes did not decode (the last discard: " + describe(last_drop_) + ")";
+      }
+      if (bad_sips > 0) wait_expired_ += "; the last undecodable " + last_bad_sip_reason_;
     }
     return std::nullopt;
   }
@@ -430,6 +504,11 @@ P2osStats P2osRobot::stats() const {
 std::string P2osRobot::failure() const {
   std::lock_guard lock(mutex_);
   return failure_.empty() ? wait_expired_ : failure_;
+}
+
+P2osFailureKind P2osRobot::failure_kind() const {
+  std::lock_guard lock(mutex_);
+  return failure_.empty() ? wait_expired_kind_ : failure_kind_;
 }
 
 }  // namespace cogmap::hw

@@ -55,6 +55,8 @@ struct PeerScript {
   std::chrono::milliseconds period{25};  ///< between SIPs (4x real time)
   /// A SYNC0 while open starts a new handshake (a real P2OS takes it for a PULSE).
   bool resync_when_open = false;
+  /// Every SIP goes out with a wrong checksum (a line that corrupts each one).
+  bool bad_sip_checksum = false;
 };
 
 // A P2OS robot as a state machine: SYNC0-2 echoed in order (SYNC2 answered with the script's
@@ -130,7 +132,9 @@ class ScriptedPeer {
             continue;
           }
           if (script_.before_sip) send(script_.before_sip(k));
-          send(p2os::frame(script_.sip(k)));
+          Bytes packet = p2os::frame(script_.sip(k));
+          if (script_.bad_sip_checksum) packet.back() ^= 0x5A;
+          send(packet);
           ++sips_;
         }
       }

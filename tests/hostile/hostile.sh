@@ -23,7 +23,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   log_nan_odometry log_inf_time log_nan_mount log_jump_1e5 log_jump_50m log_max_range_zero log_beam_width_100
   log_min_above_max log_time_backwards log_header_only log_carmen_on_cogmap log_dev_zero
   replay_name_colon replay_name_newline stale_temp_files rerun_run_directory locked_directory
-  drive_handshake_wrong_packets
+  drive_handshake_wrong_packets drive_handshake_garbage drive_handshake_silent drive_sips_never_parse
   sonar_stats_csv_is_the_log sonar_stats_csv_exists sonar_stats_csv_is_a_directory
   sonar_stats_min_speed_nan sonar_model_user_files sonar_model_range_nan sweep_out_user_results
   sweep_merge_cwd_results sweep_merge_dev_zero sweep_resume_own_directory
@@ -41,6 +41,49 @@ good_log() {
 short_experiment() {  # name world duration
   printf 'name: %s\nworld: %s\nduration_s: %s\nrobot: {source: sim}\noutput: {figures: false}\n' \
     "$1" "$2" "$3"
+}
+
+# The robot side of a P2OS link for `drive`, on a local TCP port (written to $1), one client;
+# sets $peer to its pid. Modes ($2): garbage (NMEA text every 100 ms, whatever it is sent: a
+# GPS, not a robot), silent (accepts, never answers), bad_sips (a p2at handshake, then SIPs with
+# valid checksums cut short after XPOS).
+tcp_peer() {
+  command -v python3 >/dev/null || { echo "SKIP: no python3"; exit 77; }
+  python3 - "$1" "$2" <<'PY' &
+import socket, sys, time
+port_file, mode = sys.argv[1], sys.argv[2]
+def packet(body):  # FA FB count body checksum (big-endian words summed, an odd last byte XORed)
+    c = 0
+    for i in range(0, len(body) - 1, 2): c = (c + (body[i] << 8 | body[i + 1])) & 0xFFFF
+    if len(body) % 2: c ^= body[-1]
+    return bytes([0xFA, 0xFB, len(body) + 2, *body, c >> 8, c & 0xFF])
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(1)
+open(port_file, "w").write(str(s.getsockname()[1]))
+c, _ = s.accept(); c.settimeout(0.1)
+buf, step, end = b"", 0, time.time() + 20
+while time.time() < end:
+    try:
+        data = c.recv(256)
+        if not data: break
+        buf += data
+    except socket.timeout: pass
+    except OSError: break
+    out = b""
+    while len(buf) >= 3 and len(buf) >= buf[2] + 3:  # the client's packets arrive whole
+        if buf[0] != 0xFA: buf = buf[1:]; continue
+        body, buf = buf[3:buf[2] + 1], buf[buf[2] + 3:]
+        if step < 3 and body == bytes([step]):  # SYNC0-2 echoed, SYNC2 with the robot's names
+            out += packet([2, *b"peer\0Pioneer\0p2at\0"] if step == 2 else [step]); step += 1
+        elif step == 3 and body[:1] == b"\x01": step = 4  # OPEN: SIPs from now on
+    if mode == "garbage": out = b"$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n"
+    if mode == "silent": out = b""
+    if mode == "bad_sips" and step == 4: out += packet([0x32, 0, 0, 0])
+    try:
+        if out: c.sendall(out)
+    except OSError: break
+PY
+  peer=$!
+  for _ in $(seq 50); do [[ -s $1 ]] && break; sleep 0.1; done
 }
 
 # Sets: cmd (array), want_rc, want_text, limit_s; may define check() for extra assertions.
@@ -267,6 +310,21 @@ PY
       cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 3 --out "$d/run"); want_rc=1
       want_text="P2OS handshake failed: no complete SYNC0-2 exchange"; limit_s=6
       check() { kill "$peer" 2>/dev/null; return 0; } ;;
+    drive_handshake_garbage)  # bytes that never decode were exit 1, like a silent robot
+      tcp_peer "$d/port" garbage
+      cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 3 --out "$d/run"); want_rc=2
+      want_text="only bytes that do not decode as P2OS came back"; limit_s=6
+      check() { kill "$peer" 2>/dev/null; [[ $text == *"none formed a packet; the last discard: "*" bytes at stream offsets "* ]]; } ;;
+    drive_handshake_silent)  # a robot that never answers is a failed run, not bad input
+      tcp_peer "$d/port" silent
+      cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 3 --out "$d/run"); want_rc=1
+      want_text="last: no reply to SYNC0 within 500 ms"; limit_s=6
+      check() { kill "$peer" 2>/dev/null; [[ $text != *"do not decode"* ]]; } ;;
+    drive_sips_never_parse)  # SIPs with valid checksums but an impossible layout: was exit 1
+      tcp_peer "$d/port" bad_sips
+      cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 10 --no-figures --out "$d/run")
+      want_rc=2; want_text="bad bytes from the robot side: no SIP could be decoded for 2000 ms"; limit_s=8
+      check() { kill "$peer" 2>/dev/null; [[ $text == *"the last: SIP at stream offset "*": SIP too short: field YPOS"* ]]; } ;;
     sonar_stats_csv_is_the_log)  # the table went over its own log, exit 0
       good_log >"$d/l.log"; sum=$(md5sum <"$d/l.log")
       cmd=("$cogmap" sonar-stats "$d/l.log" --csv "$d/l.log" --force); want_rc=2

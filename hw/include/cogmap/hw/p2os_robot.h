@@ -54,6 +54,34 @@ struct P2osRobotOptions {
   std::function<void(const std::string&)> log;
 };
 
+/// Why a P2OS session (or its handshake) ended, so a caller can tell bad input from a failed
+/// run (docs/cli.md: `drive` exits 2 for kBadBytes, 1 for the others).
+enum class P2osFailureKind {
+  kNone,  ///< still connected, or ended by shutdown() or the caller
+  /// Nothing usable came back: silence, the peer closed, an I/O error, a reconnection that
+  /// gave up, or packets that decode but never answer (a wrong-type echo, a loopback).
+  kLink,
+  /// Bytes kept arriving but did not decode: every handshake attempt got only undecodable
+  /// bytes or an unreadable SYNC2 reply, or SIPs arrived with valid checksums but an impossible
+  /// layout, or no SIP decoded while the bytes in their place were dropped. The message names
+  /// the stream offsets.
+  kBadBytes,
+  /// SYNC2 named a robot the driver does not support (or a different model on reconnection).
+  kUnsupportedRobot,
+};
+
+/// The constructor's handshake failure: a StreamError (callers that catch that still work)
+/// that also says which kind, so `drive` can map undecodable bytes to exit 2.
+class P2osHandshakeError : public StreamError {
+ public:
+  P2osHandshakeError(const std::string& what, P2osFailureKind kind)
+      : StreamError(what), kind_(kind) {}
+  P2osFailureKind kind() const { return kind_; }
+
+ private:
+  P2osFailureKind kind_;
+};
+
 /// Connection counters, for the run report and tests.
 struct P2osStats {
   std::uint64_t sips = 0;            ///< SIPs decoded
@@ -72,8 +100,9 @@ class P2osRobot final : public mapper::Robot {
  public:
   /// Handshakes over `stream` (SYNC0-2, OPEN, ENABLE 1, SONAR 1) and starts the I/O thread.
   /// The SYNC2 subclass picks the geometry (mapper::find_robot_model) and the conversion
-  /// factors. Throws StreamError when the robot does not answer or names a subclass that is not
-  /// a known Pioneer (the message names the device and what was received).
+  /// factors. Throws P2osHandshakeError (a StreamError) when the robot does not answer, answers
+  /// with bytes that do not decode, or names a subclass that is not a known Pioneer (the
+  /// message names the device and what was received; kind() says which).
   P2osRobot(std::unique_ptr<ByteStream> stream, P2osRobotOptions options = {});
   /// Shuts down cleanly (SONAR 0, STOP, CLOSE) if not done already.
   ~P2osRobot() override;
@@ -99,6 +128,8 @@ class P2osRobot final : public mapper::Robot {
   /// field, body offset and stream offset of the last), which no reconnection can cure; and
   /// next_frame() waiting frame_wait in vain (a peer that handshakes but sends no SIP).
   std::string failure() const;
+  /// The kind of failure() (kNone when it is empty).
+  P2osFailureKind failure_kind() const;
 
  private:
   void io_loop();
@@ -106,6 +137,7 @@ class P2osRobot final : public mapper::Robot {
   void send(const std::vector<std::uint8_t>& packet);
   std::optional<p2os::Packet> read_packet(std::chrono::milliseconds timeout);
   void receive(std::chrono::milliseconds timeout);  // stream -> decoder, abandons cut packets
+  void note_drops();  // the decoder's discards -> stats_ and last_drop_
   void handle_sip(const p2os::Packet& packet);
   void send_motion();
   void log(const std::string& message) const;
@@ -125,10 +157,16 @@ class P2osRobot final : public mapper::Robot {
   // silent, and reconnecting cannot help, so the session ends with the reason.
   std::uint64_t bad_since_sip_ = 0;
   std::chrono::steady_clock::time_point last_bad_sip_;
-  std::string last_bad_sip_reason_;
   bool reported_unknown_sonar_ = false;
+  // Handshake attempts since the link was opened or lost, by how they ended: on bytes that did
+  // not decode (or an unreadable SYNC2 reply), or on packets that were no answer (a wrong-type
+  // echo, our own SYNC2, a left-open robot's SIP). Silent attempts count for neither.
+  int garbage_attempts_ = 0;
+  int answered_attempts_ = 0;
+  std::string garbage_problem_;  // the latest of the garbage attempts, with its offsets
 
-  mutable std::mutex mutex_;  // guards everything below
+  mutable std::mutex mutex_;         // guards everything below
+  std::string last_bad_sip_reason_;  // also read by next_frame() for its message
   std::condition_variable cv_;
   std::deque<mapper::SensorFrame> frames_;
   mapper::VelocityCommand motion_;
@@ -136,7 +174,10 @@ class P2osRobot final : public mapper::Robot {
   bool stopping_ = false;
   bool finished_ = false;
   std::string failure_;
+  P2osFailureKind failure_kind_ = P2osFailureKind::kNone;  // why failure_ is set
   std::string wait_expired_;  // next_frame() ended the session: no frame within frame_wait
+  P2osFailureKind wait_expired_kind_ = P2osFailureKind::kNone;
+  p2os::DropEvent last_drop_;  // the decoder's latest discard, for wait_expired_'s message
   p2os::RobotIdentity identity_;
   P2osStats stats_;
   std::thread thread_;
