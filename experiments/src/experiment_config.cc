@@ -302,10 +302,12 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
 
   if (const auto start = root.child("start")) {
     start->expect_keys({"x_m", "y_m", "theta_deg"});
-    // The bound a world's own start has: beyond it the physics is single-precision noise.
-    e.start = mapper::Pose2{
-        sim::parse_coordinate((*start)["x_m"]), sim::parse_coordinate((*start)["y_m"]),
-        mapper::wrap_angle_rad(start->get_or<double>("theta_deg", 0.0) * std::numbers::pi / 180.0)};
+    // The bounds a world's own start has: beyond them the physics is single-precision noise,
+    // and a heading of 1e308 degrees was infinite in radians (Box2D aborted on it).
+    const auto theta = start->child("theta_deg");
+    e.start = mapper::Pose2{sim::parse_coordinate((*start)["x_m"]),
+                            sim::parse_coordinate((*start)["y_m"]),
+                            theta ? mapper::wrap_angle_rad(sim::parse_angle_deg(*theta)) : 0.0};
   }
   if (const auto robot = root.child("robot")) {
     robot->expect_map();

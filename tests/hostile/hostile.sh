@@ -31,7 +31,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sweep_vary_missing_world sweep_vary_unknown_key sweep_merge_negative_run sweep_merge_text_run
   experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
-  run_set_missing_world)
+  run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -473,6 +473,22 @@ PY
       { good_log; printf 'F 1.0 0.10 0 0 0 0 - 1 0,1.'; } >"$d/l.log"
       cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
       want_text="l.log:11: expected reading index,range_m,echo,time_s (1 of 1), got '0,1.' (the last line, cut short" ;;
+    world_start_theta_huge)  # 1e308 deg is infinite in radians: Box2D aborted (SIGABRT)
+      printf 'name: w\nwalls: {polylines: [[[0,0],[10,0],[10,10],[0,10],[0,0]]]}\nstart: {x_m: 5, y_m: 5, theta_deg: 1e308}\n' >"$d/w.yaml"
+      short_experiment e w.yaml 2 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="w.yaml:3: start.theta_deg: angle 1e+308 deg is beyond the +/-1e+06 deg a file may give"
+      check() { [[ ! -e $d/run ]]; } ;;
+    experiment_start_theta_huge)  # the same abort from an experiment's start (or --set start=...)
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'start: {x_m: 1, y_m: 1, theta_deg: -1e308}\n' >>"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:6: start.theta_deg: angle -1e+308 deg is beyond the +/-1e+06 deg a file may give"
+      check() { [[ ! -e $d/run ]]; } ;;
+    world_box_angle_huge)  # a box of NaN corners: `world check` said OK, the run mapped nothing
+      printf 'name: w\nwalls: {polylines: [[[0,0],[10,0],[10,10],[0,10],[0,0]]]}\nobstacles:\n  - {box: {center: [5, 8], size: [1, 1], angle_deg: 1e308}}\nstart: {x_m: 5, y_m: 5}\n' >"$d/w.yaml"
+      cmd=("$cogmap" world check "$d/w.yaml"); want_rc=1
+      want_text="ERROR $d/w.yaml:4: obstacles[0].box.angle_deg: angle 1e+308 deg is beyond the +/-1e+06 deg" ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

@@ -24,6 +24,16 @@ double parse_coordinate(const yaml::Node& node) {
   return v;
 }
 
+double parse_angle_deg(const yaml::Node& node) {
+  const double v = node.as<double>();
+  if (std::abs(v) > kMaxAngleDeg) {
+    std::ostringstream msg;
+    msg << "angle " << v << " deg is beyond the +/-" << kMaxAngleDeg << " deg a file may give";
+    node.fail(msg.str());
+  }
+  return v * std::numbers::pi / 180.0;
+}
+
 namespace {
 
 // Two points closer than this are the same point, metres (a tenth of a millimetre).
@@ -167,7 +177,7 @@ BoxObstacle parse_box(const yaml::Node& node) {
   }
   box.length_m = s.x();
   box.width_m = s.y();
-  box.angle_rad = node.get_or<double>("angle_deg", 0.0) * std::numbers::pi / 180.0;
+  if (const auto angle = node.child("angle_deg")) box.angle_rad = parse_angle_deg(*angle);
   return box;
 }
 
@@ -302,9 +312,9 @@ WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options) 
   }
   const yaml::Node start = root["start"];
   start.expect_keys({"x_m", "y_m", "theta_deg"});
-  world.start = {
-      parse_coordinate(start["x_m"]), parse_coordinate(start["y_m"]),
-      mapper::wrap_angle_rad(start.get_or<double>("theta_deg", 0.0) * std::numbers::pi / 180.0)};
+  const auto theta = start.child("theta_deg");
+  world.start = {parse_coordinate(start["x_m"]), parse_coordinate(start["y_m"]),
+                 theta ? mapper::wrap_angle_rad(parse_angle_deg(*theta)) : 0.0};
   world.start_source = source_of(start);
   check_start(world, options);
   return world;

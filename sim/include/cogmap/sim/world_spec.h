@@ -27,6 +27,16 @@ inline constexpr double kMaxCoordinateM = 1000.0;
 /// yaml::ConfigError at `node` otherwise.
 double parse_coordinate(const yaml::Node& node);
 
+/// Largest |angle| of a world's box `angle_deg` and start `theta_deg` and of an experiment's
+/// start `theta_deg`, degrees. Any turn a file means is far inside it (generated buildings add
+/// a rotation of up to 360 degrees to their own); 1e308 overflowed to an infinite angle in
+/// radians, a NaN start heading that Box2D aborted on.
+inline constexpr double kMaxAngleDeg = 1e6;
+
+/// An angle in degrees: a finite number within +/-kMaxAngleDeg, returned in radians (not
+/// wrapped). Throws yaml::ConfigError at `node` otherwise.
+double parse_angle_deg(const yaml::Node& node);
+
 /// Where a YAML element came from, so later checks (start clearance) can still name it.
 struct SourceRef {
   int line = 0;     ///< 1-based line in the world file, 0 when unknown
