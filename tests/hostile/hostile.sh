@@ -31,7 +31,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sweep_vary_missing_world sweep_vary_unknown_key sweep_merge_negative_run sweep_merge_text_run
   experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
-  run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge)
+  run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
+  yaml_nested_5000)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -489,6 +490,10 @@ PY
       printf 'name: w\nwalls: {polylines: [[[0,0],[10,0],[10,10],[0,10],[0,0]]]}\nobstacles:\n  - {box: {center: [5, 8], size: [1, 1], angle_deg: 1e308}}\nstart: {x_m: 5, y_m: 5}\n' >"$d/w.yaml"
       cmd=("$cogmap" world check "$d/w.yaml"); want_rc=1
       want_text="ERROR $d/w.yaml:4: obstacles[0].box.angle_deg: angle 1e+308 deg is beyond the +/-1e+06 deg" ;;
+    yaml_nested_5000)  # past yaml-cpp's own depth guard: "YAML syntax: bad file"
+      { printf 'name: e\nx: '; head -c 5000 /dev/zero | tr '\0' '['; head -c 5000 /dev/zero | tr '\0' ']'; echo; } >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:2: YAML syntax: nested more than 64 levels deep" ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

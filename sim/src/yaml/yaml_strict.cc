@@ -8,6 +8,7 @@
 #include <sstream>
 #include <system_error>
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
 
 namespace cogmap::yaml {
@@ -33,6 +34,16 @@ std::string bare(const ConfigError& e) {
   const std::string what = e.what();
   const std::string prefix = describe(e.file(), e.line(), e.key(), "");
   return what.starts_with(prefix) ? what.substr(prefix.size()) : what;
+}
+
+// What a parser error says. yaml-cpp stops nesting deeper than its own limit (a few hundred
+// levels, far past LoadLimits::max_depth) with "bad file", which named neither the cause nor
+// the limit: `x: [[[[...]]]]` 500 deep said "YAML syntax: bad file".
+std::string syntax_message(const YAML::Exception& e, const LoadLimits& limits) {
+  if (dynamic_cast<const YAML::DeepRecursion*>(&e) != nullptr) {
+    return "nested more than " + std::to_string(limits.max_depth) + " levels deep";
+  }
+  return e.msg;
 }
 
 int line_of(const YAML::Node& node) {
@@ -196,7 +207,8 @@ Node Node::load_string(const std::string& text, const std::string& file, const L
     }
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw ConfigError(file, e.mark.is_null() ? 0 : e.mark.line + 1, "", "YAML syntax: " + e.msg);
+    throw ConfigError(file, e.mark.is_null() ? 0 : e.mark.line + 1, "",
+                      "YAML syntax: " + syntax_message(e, limits));
   }
   if (!root.IsDefined() || root.IsNull()) throw ConfigError(file, 1, "", "the document is empty");
   TreeCheck(file, limits).visit(root, "", 0);
@@ -344,7 +356,8 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
     }
     value = YAML::Load(value_text.empty() ? "''" : value_text);
   } catch (const YAML::Exception& e) {
-    throw ConfigError("--set", 0, key, "value is not valid YAML: " + e.msg);
+    throw ConfigError("--set", 0, key,
+                      "value is not valid YAML: " + syntax_message(e, LoadLimits{}));
   }
   try {
     TreeCheck("--set", LoadLimits{}).visit(value, key, 0);

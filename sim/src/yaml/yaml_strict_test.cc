@@ -122,6 +122,10 @@ TEST(YamlStrict, SizeNodeCountAndNestingAreBounded) {
               Node::load_string("a: [[[[1]]]]\n", "deep.yaml", shallow);
             }).find("nested more than 3 levels"),
             std::string::npos);
+  // Deeper than yaml-cpp's own parser goes: its "bad file" is reported as the depth limit.
+  const std::string very_deep = "a: " + std::string(5000, '[') + std::string(5000, ']') + "\n";
+  EXPECT_EQ(config_error_of([&] { Node::load_string(very_deep, "deep.yaml"); }),
+            "deep.yaml:1: YAML syntax: nested more than 64 levels deep");
 }
 
 TEST(YamlStrict, OnlyRegularFilesAreRead) {
