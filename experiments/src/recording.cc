@@ -14,6 +14,14 @@ Recording open_recording(const std::filesystem::path& path, const RecordingOptio
     throw std::invalid_argument("unknown recording format '" + f +
                                 "' (auto, cogmap, carmen, player, rosbag)");
   }
+  // Before anything opens it: opening a FIFO for reading waits for a writer, so `replay` and
+  // `sonar-stats` of a named pipe hung in the bag-magic check (a device or directory is refused
+  // by each reader too, but only after that check opened it).
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw hw::LogError(path.string() + ": not a regular file (a device, pipe or directory)");
+  }
   Recording out;
   const bool bag = f == "rosbag" || (f == "auto" && hw::looks_like_ros_bag(path));
   const hw::BagImportOptions& b = options.bag;

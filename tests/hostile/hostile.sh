@@ -32,7 +32,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
-  yaml_nested_5000)
+  yaml_nested_5000 log_fifo sonar_stats_fifo)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -494,6 +494,15 @@ PY
       { printf 'name: e\nx: '; head -c 5000 /dev/zero | tr '\0' '['; head -c 5000 /dev/zero | tr '\0' ']'; echo; } >"$d/e.yaml"
       cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
       want_text="e.yaml:2: YAML syntax: nested more than 64 levels deep" ;;
+    log_fifo)  # a named pipe as the log: the ROS bag check opened it and waited for a writer
+      mkfifo "$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2; limit_s=5
+      want_text="cogmap replay: $d/l.log: not a regular file (a device, pipe or directory)"
+      check() { [[ ! -e $d/run ]]; } ;;
+    sonar_stats_fifo)  # the same hang in sonar-stats
+      mkfifo "$d/l.log"
+      cmd=("$cogmap" sonar-stats "$d/l.log"); want_rc=2; limit_s=5
+      want_text="$d/l.log: not a regular file (a device, pipe or directory)" ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }
