@@ -1,6 +1,9 @@
 // The experiment file's `mapper:` block (docs/experiment-format.md): every key of the mapper's
 // options, with its range; thesis defaults come from MapperOptions itself.
+#include <cmath>
 #include <numbers>
+#include <optional>
+#include <sstream>
 #include <string>
 
 #include "cogmap/experiments/experiment_config.h"
@@ -123,6 +126,32 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "min_room_travel_m", 0.0, 1000.0, o.doorway.min_room_travel_m);
   o.min_room_duration_s = number_in(block, "min_room_duration_s", 0.0, 1e6, o.min_room_duration_s);
   o.max_room_extent_m = number_in(block, "max_room_extent_m", 1.0, 2000.0, o.max_room_extent_m);
+  {
+    // Each bound alone leaves the product unbounded: 10 mm cells at the default 200 m, or
+    // 2000 m at 100 mm, is a grid of ~4e8 cells (docs/reliability.md "Limits").
+    const double limit = ExperimentLimits{}.max_room_grid_side_cells;
+    const double cell_m = o.grid_options.cell_scale_mm / 1000.0;
+    const double side = (o.max_room_extent_m + 10.0) / cell_m;
+    if (side > limit) {
+      const auto extent = block.child("max_room_extent_m");
+      const auto cell = block.child("cell_scale_mm");
+      // Blame the key that left its safe default: a wider room than 200 m, else finer cells.
+      const bool wide = extent && o.max_room_extent_m > mapper::MapperOptions{}.max_room_extent_m;
+      const std::optional<Node> at = wide ? extent : (cell ? cell : extent);
+      std::ostringstream msg;
+      msg << o.grid_options.cell_scale_mm << " mm cells with max_room_extent_m "
+          << o.max_room_extent_m << " m allow a room grid of " << std::ceil(side)
+          << " cells a side (the room plus 5 m of sonar range each way), more than the " << limit
+          << "-cell limit (docs/reliability.md); use cell_scale_mm of at least "
+          << std::ceil((o.max_room_extent_m + 10.0) / limit * 1000.0)
+          << " or max_room_extent_m of at most " << std::floor(limit * cell_m - 10.0);
+      if (at) {
+        at->fail(msg.str());
+      } else {
+        block.fail(msg.str());
+      }
+    }
+  }
   o.max_room_travel_m = number_in(block, "max_room_travel_m", 0.0, 1e6, o.max_room_travel_m);
   o.localizer.odometry_prior = block.get_or<bool>("em_odometry_prior", o.localizer.odometry_prior);
   o.localizer.prior_shrinks = block.get_or<bool>("em_prior_shrinks", o.localizer.prior_shrinks);

@@ -32,7 +32,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
-  yaml_nested_5000 log_fifo sonar_stats_fifo)
+  yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -503,6 +503,17 @@ PY
       mkfifo "$d/l.log"
       cmd=("$cogmap" sonar-stats "$d/l.log"); want_rc=2; limit_s=5
       want_text="$d/l.log: not a regular file (a device, pipe or directory)" ;;
+    room_grid_cells_10mm)  # 21 000 cells a side: past 11 GB and 90 s on a 200 m diagonal log
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'mapper: {cell_scale_mm: 10}\n' >>"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:6: mapper.cell_scale_mm: 10 mm cells with max_room_extent_m 200 m allow a room grid of 21000 cells a side"
+      check() { [[ ! -e $d/run && $text == *"use cell_scale_mm of at least 53 or max_room_extent_m of at most 30"* ]]; } ;;
+    room_grid_extent_2000m)  # the documented maximum extent at the default cell: 9 GB, 53 s
+      good_log >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --set mapper.max_room_extent_m=2000 --out "$d/run"); want_rc=2
+      want_text="mapper.max_room_extent_m: 100 mm cells with max_room_extent_m 2000 m allow a room grid of 20100 cells a side"
+      check() { [[ ! -e $d/run ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

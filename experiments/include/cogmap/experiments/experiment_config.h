@@ -65,6 +65,12 @@ struct ExperimentLimits {
   /// Longest `duration_s`, seconds: 4 h, past a P2-AT battery (2-3 h, P2AT.md) and 16x the
   /// longest shipped experiment (900 s). An explorer asked for 1e12 s ran forever.
   double max_duration_s = 14400.0;
+  /// Largest side of a room grid `mapper:` may ask for, cells: (max_room_extent_m + 2 x 5 m of
+  /// sonar range) / cell_scale_mm. 4000 keeps every shipped value (200 m at 55 mm: 3 818) and
+  /// a grid under ~16 M cells (a 200 m room at 55 mm peaked at 0.5 GB, 0.8 GB with figures);
+  /// 10 mm cells at the default 200 m (21 000 cells a side) grew past 11 GB in 90 s, 2000 m at
+  /// 100 mm to 9 GB.
+  double max_room_grid_side_cells = 4000.0;
 };
 
 /// A fully parsed experiment, overrides applied.
