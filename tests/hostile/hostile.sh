@@ -32,7 +32,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   experiment_empty_value log_gzipped log_bom_crlf log_nul_tail log_cut_mid_line
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
-  yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m)
+  yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
+  log_time_gap_jump)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -514,6 +515,16 @@ PY
       cmd=("$cogmap" replay "$d/l.log" --set mapper.max_room_extent_m=2000 --out "$d/run"); want_rc=2
       want_text="mapper.max_room_extent_m: 100 mm cells with max_room_extent_m 2000 m allow a room grid of 20100 cells a side"
       check() { [[ ! -e $d/run ]]; } ;;
+    log_time_gap_jump)  # 2800 m in one step after a 10 000 s gap, within the log's step limit:
+      # one room grid held both ends (> 5 GB, killed at 20 s); now the jump starts a new room
+      { echo "$H"
+        echo "F 0 -990 -990 0 0 0 - 1 0,1.5,1,0"; echo "F 0.1 -990 -990 0 0 0 - 1 0,1.5,1,0.1"
+        echo "F 10000 990 990 0 0 0 - 2 0,1.5,1,0.2 1,1.5,1,10000"
+        echo "F 10000.1 990 990 0 0 0 - 1 0,1.5,1,10000.1"; } >"$d/l.log"
+      cmd=(bash -c 'ulimit -v 2000000; exec "$0" replay "$1" --out "$2" --no-figures' "$cogmap" "$d/l.log" "$d/run")
+      want_rc=0; limit_s=5
+      want_text="l.log: 2 rooms, outputs in $d/run"
+      check() { (($(stat -c %s "$d/run/grid_000.pgm") < 1000000)) && (($(stat -c %s "$d/run/grid_001.pgm") < 1000000)); } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

@@ -149,6 +149,11 @@ struct Mapper::Impl {
   void finish_scan_match(const Pose2& pose);
 
   std::optional<int> finish_room(double time_s, const std::optional<BoundaryEvent>& leaving);
+  /// Ends the current room at `event` (finish_room at `end_time_s`) and starts the next at
+  /// `start_time_s` and the frame's estimate, which it updates in `pose` (the finished room's
+  /// correction, a door fix).
+  std::optional<int> next_room(double end_time_s, double start_time_s, const Pose2& odometry,
+                               const BoundaryEvent& event, Pose2& pose);
   /// A doorway passed (the entry of the room just begun, corrected estimate frame): with
   /// options.door_fix, the shift that puts it back where the same door was first passed, applied
   /// to the estimate from now on (zero for a new door).
@@ -374,6 +379,35 @@ std::optional<int> Mapper::Impl::finish_room(double time_s,
   return resident.back().id;
 }
 
+std::optional<int> Mapper::Impl::next_room(double end_time_s, double start_time_s,
+                                           const Pose2& odometry, const BoundaryEvent& event,
+                                           Pose2& pose) {
+  const std::optional<int> finished = finish_room(end_time_s, event);
+  // The finished room's correction applies from now on: re-express pose and exit.
+  const Pose2 fix = last_room_fix;
+  pose = estimate(odometry);
+  Exit entry{fix.transform(event.exit_center),
+             event.exit_width_m,
+             wrap_angle_rad(event.heading_rad + fix.theta_rad),
+             {}};
+  // A doorway (a cut has no width) passed before fixes the estimate's position; with
+  // localisation off the estimate stays odometry's, as the thesis's baseline.
+  if (options.localization == LocalizationKind::kEm && options.door_fix.enabled &&
+      event.exit_width_m > 0.0) {
+    const Point2 shift = fix_at_door(entry);
+    entry.center += shift;
+    pose = estimate(odometry);
+  }
+  room.start(next_id++, start_time_s, pose, entry, finished);
+  restart_room_path(pose.translation());
+  if (options.glimpse.enabled) {
+    // The finished room's walls are the reference now; its glimpses were part of it.
+    glimpse_walls.clear();
+    glimpse.begin(pose);
+  }
+  return finished;
+}
+
 Mapper::Mapper(const MapperOptions& options, const RobotGeometry& robot, AsrStore& store,
                const Pose2& start_pose)
     : impl_(std::make_unique<Impl>(options, robot, store, start_pose)) {}
@@ -404,6 +438,19 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
     m.started = true;
     if (m.options.glimpse.enabled) m.glimpse.begin(pose);
   }
+  // The extent limit bounds every room grid whatever the input: a pose that would stretch the
+  // room past it (a log's time gap admits an odometry jump of kilometres, which grew one grid
+  // to gigabytes) starts the next room before anything of the frame is drawn, whatever
+  // min_room_duration_s says, and the frame's readings are not spread along the jump.
+  std::optional<int> finished;
+  const Point2 here = pose.translation();
+  if ((m.room_hi.cwiseMax(here) - m.room_lo.cwiseMin(here)).maxCoeff() >
+      m.options.max_room_extent_m) {
+    const double heading = m.last_estimate ? m.last_estimate->theta_rad : pose.theta_rad;
+    finished = m.next_room(m.last_time_s, frame.time_s, odometry,
+                           BoundaryEvent{m.last_time_s, m.room_last_point, 0.0, heading}, pose);
+    m.last_estimate.reset();
+  }
   m.room.visit(pose);
   m.integrate(frame, pose);
   if (m.options.scan_match.enabled && m.scan_match.visit(pose, turned_rad)) {
@@ -422,37 +469,14 @@ std::optional<int> Mapper::process(const SensorFrame& frame) {
   m.travel_m += step_m;
   m.room_last_point = pose.translation();
 
-  std::optional<int> finished;
   std::optional<BoundaryEvent> event = m.boundary->update(frame, pose);
   const double travel_limit_m = applied_max_room_travel_m(m.options);
   const bool too_long = travel_limit_m > 0.0 && m.room_travel_m >= travel_limit_m;
   if (!event && (too_long || (m.room_hi - m.room_lo).maxCoeff() > m.options.max_room_extent_m)) {
     event = BoundaryEvent{frame.time_s, pose.translation(), 0.0, pose.theta_rad};
   }
-  if (event && frame.time_s - m.room.start_time_s() >= m.options.min_room_duration_s) {
-    finished = m.finish_room(frame.time_s, event);
-    // The finished room's correction applies from now on: re-express pose and exit.
-    const Pose2 fix = m.last_room_fix;
-    pose = m.estimate(odometry);
-    Exit entry{fix.transform(event->exit_center),
-               event->exit_width_m,
-               wrap_angle_rad(event->heading_rad + fix.theta_rad),
-               {}};
-    // A doorway (a cut has no width) passed before fixes the estimate's position; with
-    // localisation off the estimate stays odometry's, as the thesis's baseline.
-    if (m.options.localization == LocalizationKind::kEm && m.options.door_fix.enabled &&
-        event->exit_width_m > 0.0) {
-      const Point2 shift = m.fix_at_door(entry);
-      entry.center += shift;
-      pose = m.estimate(odometry);
-    }
-    m.room.start(m.next_id++, frame.time_s, pose, entry, finished);
-    m.restart_room_path(pose.translation());
-    if (m.options.glimpse.enabled) {
-      // The finished room's walls are the reference now; its glimpses were part of it.
-      m.glimpse_walls.clear();
-      m.glimpse.begin(pose);
-    }
+  if (!finished && event && frame.time_s - m.room.start_time_s() >= m.options.min_room_duration_s) {
+    finished = m.next_room(frame.time_s, frame.time_s, odometry, *event, pose);
   }
   m.last_estimate = pose;
   m.last_time_s = frame.time_s;

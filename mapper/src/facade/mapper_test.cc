@@ -223,6 +223,32 @@ TEST(Mapper, ARoomLargerThanTheExtentLimitEnds) {
   EXPECT_LT(small_peak, default_peak);
 }
 
+TEST(Mapper, AJumpPastTheExtentLimitStartsTheNextRoomBeforeItIsDrawn) {
+  // A log's time gap admits a long odometry jump (1 m + 2 x top speed x the gap): 1400 m in
+  // one frame, with a reading timed just after the frame before it. One grid used to hold both
+  // ends (a 2800 m jump: gigabytes) and min_room_duration_s could hold the cut off for ever.
+  const RobotGeometry robot = p2at_geometry();
+  MapperOptions options;
+  options.min_room_duration_s = 1e6;
+  MemoryAsrStore store;
+  Mapper mapper(options, robot, store, Pose2{});
+  auto frame = [](double t, double x, double reading_t) {
+    SensorFrame f;
+    f.time_s = t;
+    f.odometry = Pose2{x, x, 0.0};  // diagonal: a grid holding both ends is square
+    f.sonar.push_back(SonarReading{0, 1.5, true, reading_t});
+    return f;
+  };
+  EXPECT_FALSE(mapper.process(frame(0.0, 0.0, 0.0)));
+  EXPECT_FALSE(mapper.process(frame(0.1, 0.05, 0.1)));
+  EXPECT_EQ(mapper.process(frame(700.0, 1000.0, 0.2)), std::optional<int>(0));
+  EXPECT_FALSE(mapper.process(frame(700.1, 1000.05, 700.1)));
+  mapper.finish();
+  EXPECT_EQ(store.ids().size(), 2u);
+  // Each grid spans metres, not the kilometre between them (10 cm cells, one byte or more).
+  EXPECT_LT(mapper.stats().peak_grid_bytes, 4'000'000u);
+}
+
 TEST(Mapper, ARoomToursLongerThanTheTravelLimitAreCut) {
   const RobotGeometry robot = p2at_geometry();
   // A 6 x 5 m room without a door toured one and a half times at 1 m from its walls: 21 m of

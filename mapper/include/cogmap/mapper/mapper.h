@@ -48,10 +48,11 @@ struct MapperOptions {
   /// the spot) are taken out of that odometry (docs/algorithms.md, "Turns made while held").
   HeldTurnOptions held_turn;
   double min_room_duration_s = 2.0;  ///< boundaries closer in time than this are ignored
-  /// A room whose path spans more than this (metres, either axis) ends there, as a distance cut
-  /// would: it bounds a room grid to (extent + 2 x sonar range)^2, 210 m -> 4.4 M cells of 10 cm
-  /// (18 MB), however long a doorway-less corridor or a broken odometry runs. The thesis's
-  /// rooms and hallway cuts are under 80 m.
+  /// A room whose path would span more than this (metres, either axis) ends before the pose
+  /// that would stretch it, as a distance cut would, whatever min_room_duration_s says: it
+  /// bounds a room grid to (extent + 2 x sonar range)^2, 210 m -> 4.4 M cells of 10 cm (18 MB),
+  /// however long a doorway-less corridor or a broken odometry runs, and across a jump (a log's
+  /// time gap). The thesis's rooms and hallway cuts are under 80 m.
   double max_room_extent_m = 200.0;
   /// A room whose path (the estimate's, metres) grows longer than this ends there, as the
   /// thesis cuts its hallways every 4.5 m (§3.1.2), so that EM corrects a room toured for
