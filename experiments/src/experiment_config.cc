@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "cogmap/sim/sim_robot.h"
 #include "cogmap/sim/world_spec.h"
 #include "config_numbers.h"
 
@@ -362,6 +363,12 @@ Experiment parse_with_overrides(Node root, const std::filesystem::path& file,
   Experiment experiment;
   try {
     experiment = parse_experiment(root, file);
+    // The simulator's robot block is read by the run, which knows no overrides: checked here
+    // too, an error `--set robot.sonar.rays_per_cone=0` causes names its line and override
+    // (it said `e.yaml:1: robot.sonar.rays_per_cone: ...` and nothing of the --set).
+    if (experiment.robot_source == RobotSource::kSim && experiment.robot) {
+      (void)sim::parse_sim_robot_options(*experiment.robot);
+    }
   } catch (const ConfigError& e) {
     rethrow_with_override(e, root.raw(), overrides);
   }

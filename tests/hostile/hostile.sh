@@ -33,7 +33,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
   yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
-  log_time_gap_jump)
+  log_time_gap_jump set_robot_sonar_key)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -525,6 +525,11 @@ PY
       want_rc=0; limit_s=5
       want_text="l.log: 2 rooms, outputs in $d/run"
       check() { (($(stat -c %s "$d/run/grid_000.pgm") < 1000000)) && (($(stat -c %s "$d/run/grid_001.pgm") < 1000000)); } ;;
+    set_robot_sonar_key)  # was e.yaml:1 and no word of the override (the run parses the block)
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --set robot.sonar.rays_per_cone=100000 --out "$d/run"); want_rc=2
+      want_text="e.yaml:4: robot.sonar.rays_per_cone: must be in [1, 1000] (from --set robot.sonar.rays_per_cone=100000)"
+      check() { [[ ! -e $d/run ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }
