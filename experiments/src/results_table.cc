@@ -118,7 +118,7 @@ ResultsTable parse_csv(const std::string& text, const std::string& name) {
   std::vector<std::string> row;
   std::string field;
   bool in_quotes = false, any = false;
-  int line = 1, record_line = 1;
+  int line = 1, record_line = 1, quote_line = 1;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (!any && field.empty() && row.empty()) record_line = line;
@@ -136,6 +136,7 @@ ResultsTable parse_csv(const std::string& text, const std::string& name) {
     }
     if (c == '"') {
       in_quotes = true;
+      quote_line = line;
       any = true;
     } else if (c == ',') {
       row.push_back(std::move(field));
@@ -157,7 +158,10 @@ ResultsTable parse_csv(const std::string& text, const std::string& name) {
       any = true;
     }
   }
-  if (in_quotes) throw std::runtime_error(name + ": unterminated quoted field");
+  if (in_quotes) {  // named the file only: a stray quote swallows the rest of it
+    throw std::runtime_error(name + ":" + std::to_string(quote_line) +
+                             ": a quoted field opens here and is never closed");
+  }
   if (any || !field.empty()) {
     row.push_back(std::move(field));
     lines.push_back(std::move(row));

@@ -33,7 +33,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
   yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
-  log_time_gap_jump set_robot_sonar_key)
+  log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -530,6 +530,11 @@ PY
       cmd=("$cogmap" run "$d/e.yaml" --set robot.sonar.rays_per_cone=100000 --out "$d/run"); want_rc=2
       want_text="e.yaml:4: robot.sonar.rays_per_cone: must be in [1, 1000] (from --set robot.sonar.rays_per_cone=100000)"
       check() { [[ ! -e $d/run ]]; } ;;
+    sweep_merge_open_quote)  # a stray quote swallows the rest of the file: named no line
+      printf 'run,seed,x\n0,1,2\n1,2,"oops\n2,3,4\n' >"$d/results.csv"
+      cmd=("$cogmap" sweep --merge "$d/results.csv" --out "$d/m" --no-plots); want_rc=2
+      want_text="results.csv:3: a quoted field opens here and is never closed"
+      check() { [[ ! -e $d/m ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }
