@@ -119,6 +119,12 @@ void FdStream::write(std::span<const std::uint8_t> bytes) {
   }
 }
 
+bool FdStream::accepts_writes() {
+  pollfd p{fd_, POLLOUT, 0};
+  // A hang-up or error also counts as "yes": the next write() reports it as such.
+  return ::poll(&p, 1, 0) != 0;
+}
+
 std::size_t FdStream::read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) {
   if (buffer.empty()) return 0;
   const auto deadline = std::chrono::steady_clock::now() + timeout;

@@ -6,6 +6,9 @@
 #include <fstream>
 #include <thread>
 
+#include <poll.h>
+#include <unistd.h>
+
 #include "cogmap/hw/fd_stream.h"
 #include "cogmap/hw/p2os_robot.h"
 #include "cogmap/hw/p2os_server.h"
@@ -404,6 +407,25 @@ TEST(TcpTransport, ConnectsAndRejectsBadAddresses) {
   EXPECT_THROW(server->read(buf, 1000ms), StreamClosed);
   EXPECT_THROW(connect_tcp("nohostport", 100ms), std::invalid_argument);
   EXPECT_THROW(connect_tcp("127.0.0.1:1", 500ms), StreamError);  // refused
+}
+
+// The server keeps streaming to a silent client while its link takes bytes; a pty whose
+// client is gone (the slave still held open by us) must say so once its buffer fills, or the
+// server's writes would time out and end `cogmap serve`.
+TEST(Pty, UnreadMasterStopsAcceptingWritesAndRecovers) {
+  auto pty = open_pty();
+  const std::vector<std::uint8_t> sip(50, 0x55);
+  std::size_t written = 0;
+  while (pty->master->accepts_writes() && written < (16u << 20)) {
+    pty->master->write(sip);
+    written += sip.size();
+  }
+  EXPECT_FALSE(pty->master->accepts_writes()) << written << " bytes written";
+  std::uint8_t buf[4096];
+  pollfd p{pty->slave_fd, POLLIN, 0};
+  while (::poll(&p, 1, 50) > 0 && ::read(pty->slave_fd, buf, sizeof buf) > 0) {
+  }
+  EXPECT_TRUE(pty->master->accepts_writes());
 }
 
 TEST(MemoryPair, ReadsTimeOutAndCloseIsSeen) {

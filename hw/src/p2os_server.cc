@@ -264,7 +264,12 @@ void P2osServer::run(const std::atomic<bool>& stop) {
           }
           if (options_.log) options_.log("watchdog: no command for 2 s, stopping");
         }
-        if (open_ && Clock::now() - last_command_ > options_.client_timeout) {
+        // A client that sends nothing may still be reading: Player's and ROS's p2os send no
+        // command while idle (their `pulse` is off by default) and block until the next SIP,
+        // and a real controller streams until CLOSE. So a silent client is dropped only once
+        // the link stops taking bytes (a pty whose client died fills in about 20 s).
+        if (open_ && Clock::now() - last_command_ > options_.client_timeout &&
+            !stream_.accepts_writes()) {
           open_ = false;
           sync_step_ = 0;
           {

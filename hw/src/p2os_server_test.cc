@@ -30,6 +30,7 @@ std::optional<p2os::Packet> await(ByteStream& link, p2os::PacketDecoder& d, std:
 
 struct Served {
   std::unique_ptr<ByteStream> robot_end, client;
+  std::unique_ptr<testing::BackedUpStream> link;  // the server's view of robot_end
   testing::KinematicBody body;
   std::unique_ptr<P2osServer> server;
   std::atomic<bool> stop{false};
@@ -40,7 +41,8 @@ struct Served {
     auto pair = make_memory_pair();
     robot_end = std::move(pair.first);
     client = std::move(pair.second);
-    server = std::make_unique<P2osServer>(*robot_end, body, options);
+    link = std::make_unique<testing::BackedUpStream>(*robot_end);
+    server = std::make_unique<P2osServer>(*link, body, options);
     thread = std::thread([this] { server->run(stop); });
   }
   ~Served() {
@@ -154,6 +156,7 @@ TEST(P2osServer, SilentOpenClientIsDroppedAfterClientTimeout) {
   Served s(o);
   s.open();
   ASSERT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+  s.link->backed_up = true;  // the client crashed: nobody reads, the link's buffer fills
   std::this_thread::sleep_for(1000ms);
   EXPECT_EQ(s.server->stats().client_timeouts, 1u);
   while (s.decoder.next()) {
@@ -164,8 +167,32 @@ TEST(P2osServer, SilentOpenClientIsDroppedAfterClientTimeout) {
   std::size_t got = 0;
   for (int i = 0; i < 5; ++i) got += s.client->read(buf, 50ms);
   EXPECT_EQ(got, 0u);  // no SIPs into a link nobody reads
-  s.open();            // a new client can sync again
+  s.link->backed_up = false;
+  s.open();  // a new client can sync again
   EXPECT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+}
+
+// ROS's and Player's p2os send no command while idle (their `pulse` is off by default), yet
+// block reading the next SIP. The server closed such a client after client_timeout of
+// silence and stopped its SIPs, and the p2os node hung in its read for good. A silent client
+// that still reads keeps its SIPs, as on a real controller (only the 2 s watchdog stops it).
+TEST(P2osServer, SilentClientThatStillReadsKeepsItsSips) {
+  P2osServerOptions o;
+  o.client_timeout = 300ms;
+  o.cycle = 20ms;
+  Served s(o);
+  s.open();
+  ASSERT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+  std::this_thread::sleep_for(700ms);  // well past client_timeout, reading nothing meanwhile
+  std::uint64_t sips = 0;
+  const auto end = std::chrono::steady_clock::now() + 300ms;
+  std::uint8_t buf[512];
+  while (std::chrono::steady_clock::now() < end) {
+    s.decoder.feed({buf, s.client->read(buf, 20ms)});
+    while (auto p = s.decoder.next()) sips += p2os::is_sip(p->type()) ? 1 : 0;
+  }
+  EXPECT_EQ(s.server->stats().client_timeouts, 0u);
+  EXPECT_GE(sips, 40u);  // the 35 of the silent 700 ms, still queued, and the new ones
 }
 
 // A body whose frames carry 100 readings each: what the simulator reports after a client's

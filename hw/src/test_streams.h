@@ -66,6 +66,23 @@ class SilenceableStream final : public ByteStream {
   ByteStream& inner_;
 };
 
+/// Reports the link as no longer taking bytes while `backed_up` is set: a pty or socket whose
+/// reader is gone and whose buffer has filled (writes still go through, to keep tests simple).
+class BackedUpStream final : public ByteStream {
+ public:
+  explicit BackedUpStream(ByteStream& inner) : inner_(inner) {}
+  void write(std::span<const std::uint8_t> bytes) override { inner_.write(bytes); }
+  std::size_t read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override {
+    return inner_.read(buffer, timeout);
+  }
+  std::string name() const override { return inner_.name(); }
+  bool accepts_writes() override { return !backed_up; }
+  std::atomic<bool> backed_up{false};
+
+ private:
+  ByteStream& inner_;
+};
+
 /// Records the arrival time and type of every client packet the server reads.
 class TappingStream final : public ByteStream {
  public:

@@ -42,6 +42,12 @@ class ByteStream {
   /// The device or address, for error messages.
   virtual std::string name() const = 0;
 
+  /// False when a write would block now because the peer has stopped reading (a pty or
+  /// socket whose buffer is full); true otherwise, and whenever the transport cannot tell.
+  /// The robot-side server asks before dropping a client that sends nothing: Player's and
+  /// ROS's p2os send no command while idle yet read every SIP.
+  virtual bool accepts_writes() { return true; }
+
   /// Upper bound on one write() call: a stuck port must not hang the control loop.
   static constexpr std::chrono::milliseconds kWriteTimeout{2000};
 };

@@ -22,6 +22,7 @@ class FdStream : public ByteStream {
   void write(std::span<const std::uint8_t> bytes) override;
   std::size_t read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override;
   std::string name() const override { return name_; }
+  bool accepts_writes() override;
 
   /// The descriptor, for termios calls.
   int fd() const { return fd_; }

@@ -29,8 +29,10 @@ struct P2osServerOptions {
   std::chrono::milliseconds cycle{100};
   /// The robot stops when no command arrives for this long while open (P2OS watchdog).
   std::chrono::milliseconds watchdog{2000};
-  /// An open client silent this long is gone (crashed without CLOSE): the server closes and
-  /// waits for a new handshake, so SIPs do not pile up in a link nobody reads.
+  /// An open client silent this long whose link also stops taking bytes (ByteStream::
+  /// accepts_writes()) is gone (crashed without CLOSE): the server closes and waits for a new
+  /// handshake, so SIPs do not pile up in a link nobody reads. A silent client that still
+  /// reads keeps its SIPs, as on a real controller (an idle p2os client sends nothing).
   std::chrono::milliseconds client_timeout{10000};
   /// A client packet still incomplete this long after it began is abandoned, so the commands
   /// behind it are read (as P2osRobot does with the robot's packets).
