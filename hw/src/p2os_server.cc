@@ -46,6 +46,85 @@ std::optional<std::vector<std::pair<int, std::vector<int>>>> split_polling(
   return arrays;
 }
 
+std::vector<std::uint8_t> config_reply_body(const p2os::RobotIdentity& identity,
+                                            const mapper::RobotGeometry& geometry,
+                                            std::chrono::milliseconds watchdog,
+                                            std::chrono::milliseconds cycle) {
+  // Field order of ARCOS's CONFIGpac as ARIA's ArRobotConfigPacketReader reads it, up to the
+  // fields AMRISim also sends; ARIA reads absent later fields as 0. The speed "tops" become
+  // ARIA's absolute limits, so they must be the model's real ones, never 0.
+  std::vector<std::uint8_t> b = {p2os::kConfigReply};
+  const auto str = [&b](const std::string& text) {
+    b.insert(b.end(), text.begin(), text.end());
+    b.push_back(0);
+  };
+  const auto u8 = [&b](long v) { b.push_back(static_cast<std::uint8_t>(std::clamp(v, 0L, 255L))); };
+  const auto u16 = [&b](long v) {
+    const auto w = static_cast<std::uint16_t>(std::clamp(v, 0L, 65535L));
+    b.push_back(static_cast<std::uint8_t>(w & 0xFF));
+    b.push_back(static_cast<std::uint8_t>(w >> 8));
+  };
+  const long vel = std::lround(geometry.max_speed_mps * 1000.0);
+  const long rot_vel = std::lround(geometry.max_turn_rate_radps * 180.0 / std::numbers::pi);
+  const long accel = std::lround(geometry.max_accel_mps2 * 1000.0);
+  const long decel = std::lround(geometry.max_decel_mps2 * 1000.0);
+  constexpr long kRotAccel = 100;  // deg/s^2: ARIA's own default when it gets no CONFIG
+  str(identity.klass);
+  str(identity.subclass);
+  str("cogmap");  // serial number
+  u8(0);          // "4MOTS" (P2OS on an AT)
+  u16(rot_vel);   // RotVelTop, TransVelTop, RotAccTop, TransAccTop
+  u16(vel);
+  u16(kRotAccel);
+  u16(std::max(accel, decel));
+  u16(1000);  // PWMMax
+  str(identity.name);
+  u8(cycle.count());  // SIP cycle, ms
+  u8(0);              // host baud: the rate in use
+  u8(0);              // aux baud
+  u16(0);             // gripper
+  u16(1);             // front sonar
+  u8(1);              // rear sonar (one byte, as ARCOS sends it)
+  u16(0);             // low battery alarm
+  u16(0);             // revcount
+  u16(watchdog.count());
+  u8(0);   // P2MPACS
+  u16(0);  // stall PWM, stall count, joystick speeds
+  u16(0);
+  u16(0);
+  u16(0);
+  u16(rot_vel);  // current RotVelMax, TransVelMax, RotAccel, RotDecel
+  u16(vel);
+  u16(kRotAccel);
+  u16(kRotAccel);
+  for (int i = 0; i < 3; ++i) u16(0);  // rotation PID
+  u16(accel);                          // TransAccel, TransDecel
+  u16(decel);
+  for (int i = 0; i < 3; ++i) u16(0);  // translation PID
+  u8(0);                               // front, rear bumper segments, charger
+  u8(0);
+  u8(0);
+  u8(40);  // sonar cycle, ms
+  u8(0);   // autobaud off: ARIA must not send HOSTBAUD and switch its own rate
+  u8(0);   // no gyro
+  u16(0);  // drift factor
+  u8(0);   // aux2, aux3 baud
+  u8(0);
+  u16(0);  // ticks per mm
+  u16(0);  // shutdown voltage
+  str("cogmap");
+  u16(0);  // gyro CW, CCW
+  u16(0);
+  u8(0);   // kinematics delay
+  u16(0);  // lateral tops and settings, charge threshold (no lateral axis)
+  u16(0);
+  u16(0);
+  u16(0);
+  u16(0);
+  u16(0);
+  return b;
+}
+
 P2osServer::P2osServer(ByteStream& stream, mapper::Robot& body, P2osServerOptions options)
     : stream_(stream), body_(body), options_(std::move(options)) {
   factors_ =
@@ -161,6 +240,12 @@ void P2osServer::handle(const p2os::Packet& packet) {
         const double right_mps = static_cast<std::int8_t>(bits & 0xFF) * 0.020;
         set_motion((left_mps + right_mps) / 2.0, (right_mps - left_mps) / options_.vel2_track_m);
       }
+      break;
+    case Command::kConfig:
+      // ARIA asks at every connection and waits up to 1 s for the reply (a client that sets
+      // RequireConfigPacket fails without it); AMRISim and ARCOS answer.
+      stream_.write(p2os::frame(config_reply_body(options_.identity, body_.geometry(),
+                                                  options_.watchdog, options_.cycle)));
       break;
     case Command::kStop:
     case Command::kEStop:

@@ -287,3 +287,88 @@ TEST(P2osServer, CorruptedCountDoesNotHoldBackLaterCommands) {
 
 }  // namespace
 }  // namespace cogmap::hw
+
+namespace cogmap::hw {
+namespace {
+
+// Reads a CONFIGpac body field by field in the order ARIA's ArRobotConfigPacketReader does.
+struct ConfigCursor {
+  const std::vector<std::uint8_t>& b;
+  std::size_t at = 1;  // after the type byte
+  std::string str() {
+    std::string s;
+    while (at < b.size() && b[at] != 0) s.push_back(static_cast<char>(b[at++]));
+    ++at;
+    return s;
+  }
+  int u8() { return at < b.size() ? b[at++] : -1; }
+  int u16() {
+    if (at + 2 > b.size()) return -1;
+    const int v = b[at] | (b[at + 1] << 8);
+    at += 2;
+    return v;
+  }
+};
+
+// ARIA sends CONFIG (#18) at every connection and waits up to 1 s for the CONFIGpac (0x20);
+// with RequireConfigPacket set it refuses a robot that does not answer. The server ignored
+// it. The reply carries the model's limits where ARIA takes its absolute maxima from.
+TEST(P2osServer, ConfigRequestIsAnsweredInAriasLayout) {
+  P2osServerOptions o;
+  o.watchdog = 1500ms;
+  Served s(o);
+  s.open();
+  s.client->write(p2os::encode_command(Command::kConfig, 1));  // ARIA: comInt(CONFIG, 1)
+  const auto packet = await(*s.client, s.decoder, p2os::kConfigReply);
+  ASSERT_TRUE(packet);
+  ASSERT_LE(packet->body.size() + 5, p2os::kMaxCount);
+  const p2os::ConfigReply reply = p2os::decode_config(packet->body);
+  EXPECT_EQ(reply.robot_type, "Pioneer");
+  EXPECT_EQ(reply.subtype, "p2at");
+  ConfigCursor c{packet->body};
+  c.str();
+  c.str();
+  c.str();
+  c.u8();
+  EXPECT_EQ(c.u16(), 100);  // RotVelTop, deg/s (1.74 rad/s)
+  EXPECT_EQ(c.u16(), 750);  // TransVelTop, mm/s
+  EXPECT_GT(c.u16(), 0);    // RotAccTop
+  EXPECT_GT(c.u16(), 0);    // TransAccTop
+  c.u16();
+  EXPECT_EQ(c.str(), "cogmap-sim");
+  EXPECT_EQ(c.u8(), 100);  // SIP cycle, ms
+  c.u8();
+  c.u8();
+  c.u16();
+  EXPECT_EQ(c.u16(), 1);  // front sonar
+  EXPECT_EQ(c.u8(), 1);   // rear sonar
+  c.u16();
+  c.u16();
+  EXPECT_EQ(c.u16(), 1500);  // watchdog, ms
+  c.u8();
+  for (int i = 0; i < 4; ++i) c.u16();
+  EXPECT_EQ(c.u16(), 100);  // RotVelMax
+  EXPECT_EQ(c.u16(), 750);  // TransVelMax
+  for (int i = 0; i < 5; ++i) c.u16();
+  EXPECT_EQ(c.u16(), 300);  // TransAccel
+  EXPECT_EQ(c.u16(), 600);  // TransDecel
+  for (int i = 0; i < 3; ++i) c.u16();
+  for (int i = 0; i < 4; ++i) c.u8();
+  EXPECT_EQ(c.u8(), 0);  // autobaud off: ARIA must not switch the serial rate
+  EXPECT_EQ(c.u8(), 0);  // no gyro
+  c.u16();
+  c.u8();
+  c.u8();
+  c.u16();
+  c.u16();
+  EXPECT_EQ(c.str(), "cogmap");  // firmware version
+  for (int i = 0; i < 2; ++i) c.u16();
+  c.u8();
+  for (int i = 0; i < 6; ++i) EXPECT_GE(c.u16(), 0) << "lateral field " << i;
+  EXPECT_EQ(c.at, packet->body.size());
+  // The SIP stream goes on.
+  EXPECT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
+}
+
+}  // namespace
+}  // namespace cogmap::hw

@@ -107,6 +107,14 @@ class P2osServer {
   P2osServerStats stats_;
 };
 
+/// The CONFIGpac body (type 0x20 first) the server sends for CONFIG (#18): identity, the
+/// model's speed and acceleration limits (mm/s, deg/s), the watchdog and SIP cycle, in the
+/// field order ARIA's ArRobotConfigPacketReader reads.
+std::vector<std::uint8_t> config_reply_body(const p2os::RobotIdentity& identity,
+                                            const mapper::RobotGeometry& geometry,
+                                            std::chrono::milliseconds watchdog,
+                                            std::chrono::milliseconds cycle);
+
 /// Decodes an integer command argument (0x3B / 0x1B and two bytes); empty when absent.
 std::optional<int> command_int_argument(const p2os::Packet& packet);
 
