@@ -241,6 +241,14 @@ void P2osServer::handle(const p2os::Packet& packet) {
         set_motion((left_mps + right_mps) / 2.0, (right_mps - left_mps) / options_.vel2_track_m);
       }
       break;
+    case Command::kSetO:
+      // The position counters restart at zero where the robot stands. ROS's p2os sends it
+      // (with an argument type byte and no value) right after connecting and zeroes its own
+      // counters: ignored, its first odometry step ran from 0 to wherever ours stood.
+      if (have_odometry_) origin_ = last_odometry_;
+      options_.initial_x_count = 0;
+      options_.initial_y_count = 0;
+      break;
     case Command::kConfig:
       // ARIA asks at every connection and waits up to 1 s for the reply (a client that sets
       // RequireConfigPacket fails without it); AMRISim and ARCOS answer.

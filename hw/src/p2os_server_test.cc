@@ -370,5 +370,27 @@ TEST(P2osServer, ConfigRequestIsAnsweredInAriasLayout) {
   EXPECT_TRUE(await(*s.client, s.decoder, p2os::kSipStopped));
 }
 
+// SETO (#7) restarts the position counters where the robot stands. ROS's p2os sends it right
+// after connecting, as the type byte with an argument type and no value, and zeroes its own
+// counters; the server ignored it, so its first odometry step ran from 0 to our counters.
+TEST(P2osServer, SetoRestartsThePositionCounters) {
+  Served s;
+  s.open();
+  s.client->write(p2os::encode_command(Command::kVel, 400));
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(await(*s.client, s.decoder, p2os::kSipMoving));
+  s.client->write(p2os::encode_command(Command::kVel, 0));
+  std::optional<p2os::Packet> packet = await(*s.client, s.decoder, p2os::kSipStopped);
+  ASSERT_TRUE(packet);
+  EXPECT_GT(p2os::decode_sip(packet->body).x_pos, 0);
+  s.client->write(p2os::frame(std::vector<std::uint8_t>{7, p2os::kArgPositive}));  // ROS's SETO
+  // Drain what was in flight, then the counters read zero.
+  for (int i = 0; i < 3; ++i) packet = await(*s.client, s.decoder, p2os::kSipStopped);
+  ASSERT_TRUE(packet);
+  const p2os::Sip sip = p2os::decode_sip(packet->body);
+  EXPECT_EQ(sip.x_pos, 0);
+  EXPECT_EQ(sip.y_pos, 0);
+  EXPECT_EQ(sip.th_pos, 0);
+}
+
 }  // namespace
 }  // namespace cogmap::hw
