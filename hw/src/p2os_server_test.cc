@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string_view>
 #include <thread>
 
 #include "test_streams.h"
@@ -390,6 +392,73 @@ TEST(P2osServer, SetoRestartsThePositionCounters) {
   EXPECT_EQ(sip.x_pos, 0);
   EXPECT_EQ(sip.y_pos, 0);
   EXPECT_EQ(sip.th_pos, 0);
+}
+
+// Reads packets for `span`, returning their type bytes in order.
+std::vector<std::uint8_t> types_for(ByteStream& link, p2os::PacketDecoder& d,
+                                    std::chrono::milliseconds span) {
+  std::vector<std::uint8_t> types;
+  const auto end = std::chrono::steady_clock::now() + span;
+  std::uint8_t buf[512];
+  while (std::chrono::steady_clock::now() < end) {
+    d.feed({buf, link.read(buf, 10ms)});
+    while (auto p = d.next()) types.push_back(p->type());
+  }
+  return types;
+}
+
+// The connection of Player's and ROS's p2os as they send it: SYNC0 resent before the first
+// echo was read (so one extra echo of each comes back and a second SYNC1 follows), a bare
+// OPEN, PULSE, SONAR 0, accelerations (one negative, 0x1B), the PID gains ROTKP..TRANSKI,
+// BUMPSTALL, SONAR 1, SETO without a value; then commands ARIA or others send: JOYDRIVE,
+// SOUNDTOG, ENCODER and IOREQUEST packet requests, HOSTBAUD, a string command (TTY2, 0x2B),
+// and ARIA's "WMS2\r" radio-modem bytes before the first SYNC. None may break the sync or the
+// stream; the motion commands after them must still drive.
+TEST(P2osServer, PlayerAndAriaConnectSequencesAreServed) {
+  Served s;
+  const auto send = [&](std::uint8_t cmd, std::optional<int> arg = std::nullopt) {
+    s.client->write(arg ? p2os::encode_command(static_cast<Command>(cmd), *arg)
+                        : p2os::encode_command(static_cast<Command>(cmd)));
+  };
+  const std::string modem = "WMS2\r";
+  s.client->write(std::vector<std::uint8_t>(modem.begin(), modem.end()));
+  send(0);
+  send(0);
+  auto types = types_for(*s.client, s.decoder, 150ms);
+  EXPECT_EQ(std::count(types.begin(), types.end(), 0), 2);  // each SYNC0 echoed
+  send(1);
+  send(1);  // p2os answers the second SYNC0 echo with another SYNC1
+  types = types_for(*s.client, s.decoder, 150ms);
+  EXPECT_EQ(std::count(types.begin(), types.end(), 1), 1);
+  send(2);
+  const auto id = await(*s.client, s.decoder, 2);
+  ASSERT_TRUE(id);
+  EXPECT_EQ(p2os::decode_sync2(id->body).subclass, "p2at");
+  send(1);  // OPEN, bare
+  send(0);  // PULSE
+  send(28, 0);
+  send(5, 300);
+  send(5, -300);
+  send(23, 100);  // SETRA
+  for (std::uint8_t gain = 82; gain <= 87; ++gain) send(gain, 40);
+  send(44, 3);  // BUMPSTALL
+  send(28, 1);
+  s.client->write(p2os::frame(std::vector<std::uint8_t>{7, p2os::kArgPositive}));  // SETO
+  send(47, 1);                                                                     // JOYDRIVE
+  send(92, 0);                                                                     // SOUNDTOG
+  send(19, 1);                                                                     // ENCODER
+  send(40, 2);                                                                     // IOREQUEST
+  send(50, 0);                                                                     // HOSTBAUD 9600
+  s.client->write(p2os::encode_command(static_cast<Command>(42), std::string_view("hello")));
+  send(4, 1);  // ENABLE
+  send(11, 200);
+  send(21, -10);
+  types = types_for(*s.client, s.decoder, 600ms);
+  EXPECT_GE(std::count(types.begin(), types.end(), p2os::kSipMoving), 3);
+  EXPECT_NEAR(s.body.current().v_mps, 0.2, 1e-12);
+  EXPECT_NEAR(s.body.current().w_radps, -10 * M_PI / 180, 1e-12);
+  EXPECT_EQ(s.server->stats().syncs, 1u);
+  EXPECT_EQ(s.server->stats().bad_bytes, modem.size());
 }
 
 }  // namespace
