@@ -131,5 +131,49 @@ TEST(P2osPeers, Sync2LayoutsThatStillNameTheRobot) {
   }
 }
 
+// SYNC replies that come late (a slow radio modem or network-serial bridge), each 200 ms after
+// its SYNC, within the 300 ms this test allows a step: the handshake still completes at once.
+TEST(P2osPeers, SlowSyncRepliesWithinTheTimeoutConnect) {
+  auto [ours, theirs] = make_memory_pair();
+  PeerScript script;
+  script.sync_delay = 200ms;
+  script.sip = [](std::uint64_t n) {
+    return sip_body(0x32, static_cast<std::uint16_t>(n), 0, 0, {{2, 700}});
+  };
+  ScriptedPeer peer(std::move(theirs), script);
+  const auto started = std::chrono::steady_clock::now();
+  P2osRobot robot(std::move(ours), quick_options());
+  EXPECT_LT(std::chrono::steady_clock::now() - started, 1000ms);  // one round, no restart
+  EXPECT_GE(frames_for(robot, 300ms).size(), 3u);
+  EXPECT_EQ(robot.stats().connections, 1);
+  robot.shutdown();
+}
+
+// A robot an earlier client left open, streaming older P2OS SIPs (no BATTERYX10 ... tail),
+// whose firmware echoes SYNC0 even while open and goes on streaming until CLOSE: the echo
+// must not be taken for the start of a handshake with SIPs still coming. The SIP is seen,
+// CLOSE sent, and the second handshake connects.
+TEST(P2osPeers, LeftOpenRobotThatEchoesSync0WhileStreaming) {
+  auto [ours, theirs] = make_memory_pair();
+  PeerScript script;
+  script.start_open = true;
+  script.echo_sync0_while_open = true;
+  script.sip = [](std::uint64_t n) {
+    return sip_body(0x33, static_cast<std::uint16_t>(5 * n), 0, 0, {{4, 1000}}, false);
+  };
+  ScriptedPeer peer(std::move(theirs), script);
+  P2osRobot robot(std::move(ours), quick_options());
+  const auto frames = frames_for(robot, 300ms);
+  const P2osStats stats = robot.stats();
+  robot.shutdown();
+  EXPECT_GE(stats.left_open_recoveries, 1);
+  EXPECT_EQ(stats.connections, 1);
+  EXPECT_EQ(stats.bad_sips, 0u);
+  ASSERT_GE(frames.size(), 3u);
+  ASSERT_EQ(frames.back().sonar.size(), 1u);
+  EXPECT_NEAR(frames.back().sonar[0].range_m, 0.268, 1e-9);
+  EXPECT_EQ(peer.opens(), 1);
+}
+
 }  // namespace
 }  // namespace cogmap::hw

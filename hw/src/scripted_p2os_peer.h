@@ -57,6 +57,13 @@ struct PeerScript {
   bool resync_when_open = false;
   /// Every SIP goes out with a wrong checksum (a line that corrupts each one).
   bool bad_sip_checksum = false;
+  /// Each SYNC reply goes out this long after its SYNC arrived (a slow bridge or radio).
+  std::chrono::milliseconds sync_delay{0};
+  /// The robot was left open by an earlier client: SIPs stream before any handshake.
+  bool start_open = false;
+  /// A SYNC0 while open is echoed but the SIP stream goes on until CLOSE (firmware that
+  /// answers SYNC0 in any state).
+  bool echo_sync0_while_open = false;
 };
 
 // A P2OS robot as a state machine: SYNC0-2 echoed in order (SYNC2 answered with the script's
@@ -90,8 +97,12 @@ class ScriptedPeer {
     p2os::PacketDecoder decoder;
     std::uint8_t buf[256];
     int step = 0;
-    bool open = false;
+    bool open = script_.start_open;
     auto next_sip = std::chrono::steady_clock::now();
+    const auto reply = [this](const Bytes& bytes) {
+      if (script_.sync_delay.count() > 0) std::this_thread::sleep_for(script_.sync_delay);
+      send(bytes);
+    };
     try {
       while (!stop_) {
         const std::size_t n = link_->read(buf, 5ms);
@@ -100,13 +111,13 @@ class ScriptedPeer {
           const std::uint8_t cmd = p->type();
           if (!open) {
             if (cmd == 0 && p->body.size() == 1) {
-              send(p2os::encode_command(p2os::Command::kSync0));
+              reply(p2os::encode_command(p2os::Command::kSync0));
               step = 1;
             } else if (step == 1 && cmd == 1 && p->body.size() == 1) {
-              send(p2os::encode_command(p2os::Command::kSync1));
+              reply(p2os::encode_command(p2os::Command::kSync1));
               step = 2;
             } else if (step == 2 && cmd == 2 && p->body.size() == 1) {
-              send(p2os::frame(script_.sync2_body));
+              reply(p2os::frame(script_.sync2_body));
               step = 3;
             } else if (step == 3 && cmd == 1) {
               open = true;
@@ -116,6 +127,8 @@ class ScriptedPeer {
           } else if (cmd == 2) {
             open = false;
             step = 0;
+          } else if (cmd == 0 && p->body.size() == 1 && script_.echo_sync0_while_open) {
+            send(p2os::encode_command(p2os::Command::kSync0));
           } else if (cmd == 0 && p->body.size() == 1 && script_.resync_when_open) {
             open = false;
             send(p2os::encode_command(p2os::Command::kSync0));
