@@ -243,15 +243,18 @@ const CommandRegistrar kRegistrar{
       auto args = std::make_shared<DriveArgs>();
       CLI::App* sub = app.add_subcommand(
           "drive", "Map with a P2-AT over P2OS (serial port or TCP) and write a run directory");
-      sub->add_option("--port", args->port, "serial device, e.g. /dev/ttyUSB0");
+      sub->add_option("--port", args->port, "serial device, e.g. /dev/ttyUSB0")->check(non_empty());
       sub->add_option("--baud", args->baud, "serial rate (9600 at power-up)")
           ->check(CLI::IsMember({9600, 19200, 38400, 57600, 115200}));
-      sub->add_option("--tcp", args->tcp, "HOST:PORT (MobileSim listens on 8101)");
+      sub->add_option("--tcp", args->tcp, "HOST:PORT (MobileSim listens on 8101)")
+          ->check(non_empty());
       sub->add_option("--record", args->record,
-                      "also write a replayable cogmap log here (a new file)");
+                      "also write a replayable cogmap log here (a new file)")
+          ->check(non_empty());
       sub->add_flag("--force", args->force,
                     "replace an existing --record file and a finished run in --out");
-      sub->add_option("--out", args->out, "run directory (default runs/<name>)");
+      sub->add_option("--out", args->out, "run directory (default runs/<name>)")
+          ->check(non_empty());
       sub->add_option("--duration", args->duration_s, "stop after this many seconds")
           ->check(finite_positive());
       sub->add_option("--controller", args->controller, "how to drive (default: experiment's)")

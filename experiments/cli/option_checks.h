@@ -63,6 +63,16 @@ inline CLI::Validator finite_positive() {
       "finite number > 0");
 }
 
+/// A path or address given on the command line must not be empty: `--out ""` (an unset shell
+/// variable) used to mean "not given" and wrote to the default directory instead of refusing.
+inline CLI::Validator non_empty() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return text.empty() ? std::string("must not be empty") : std::string();
+      },
+      "not empty");
+}
+
 /// An output path a command must not write (exit 2): the message names the option, the path
 /// and what to do instead.
 class OutputPathError : public std::runtime_error {

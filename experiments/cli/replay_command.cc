@@ -19,6 +19,7 @@
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
 #include "command_registry.h"
+#include "option_checks.h"
 
 namespace cogmap::cli {
 namespace {
@@ -135,7 +136,8 @@ const CommandRegistrar kRegistrar{
           "replay",
           "Map a recorded log (cogmap, CARMEN, Player 2.x or ROS 1 bag) and write a run directory");
       sub->add_option("log", args->log, "the log file")->required()->check(CLI::ExistingFile);
-      sub->add_option("--out", args->out, "run directory (default runs/replay_<log name>)");
+      sub->add_option("--out", args->out, "run directory (default runs/replay_<log name>)")
+          ->check(non_empty());
       sub->add_option("--experiment", args->experiment,
                       "experiment file: mapper settings, and the world for ground truth")
           ->check(CLI::ExistingFile);

@@ -14,6 +14,7 @@
 #include "cogmap/experiments/usable_cores.h"
 #include "cogmap/render/renderer.h"
 #include "command_registry.h"
+#include "option_checks.h"
 
 namespace cogmap::cli {
 namespace {
@@ -150,7 +151,8 @@ const CommandRegistrar kRegistrar{
       sub->add_option("experiment", args->experiment, "experiment file (experiments/*.yaml)")
           ->required()
           ->check(CLI::ExistingFile);
-      sub->add_option("--out", args->out, "run directory (default runs/<name>_seed<N>)");
+      sub->add_option("--out", args->out, "run directory (default runs/<name>_seed<N>)")
+          ->check(non_empty());
       sub->add_option("--seed", args->seed, "replaces the experiment's seed");
       sub->add_option("--set", args->sets, "override any key, e.g. --set mapper.cell_scale_mm=55")
           ->take_all()

@@ -153,7 +153,8 @@ const CommandRegistrar kRegistrar{
           ->check(CLI::ExistingFile);
       sub->add_option("--set", args->sets, "override any key")->take_all()->allow_extra_args(false);
       sub->add_flag("--pty", args->pty, "serve on a new pseudo-terminal (its path is printed)");
-      sub->add_option("--tcp", args->tcp, "serve on HOST:PORT, e.g. 127.0.0.1:8101");
+      sub->add_option("--tcp", args->tcp, "serve on HOST:PORT, e.g. 127.0.0.1:8101")
+          ->check(non_empty());
       sub->add_option("--cycle-ms", args->cycle_ms,
                       "wall-clock ms per 100 ms SIP cycle (< 100 runs faster than real time)")
           ->check(CLI::Range(5, 1000));

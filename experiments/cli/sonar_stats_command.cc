@@ -110,7 +110,8 @@ const CommandRegistrar kRegistrar{
           ->check(CLI::ExistingFile);
       sub->add_option("--csv", args->csv,
                       "also write the table of the first as CSV here (a new file; never one of "
-                      "the recordings)");
+                      "the recordings)")
+          ->check(non_empty());
       sub->add_flag("--force", args->force, "replace an existing --csv file");
       sub->add_option("--format", args->recording.format, "recording format (default: detected)")
           ->check(CLI::IsMember({"auto", "cogmap", "carmen", "player", "rosbag"}));

@@ -14,6 +14,7 @@
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/render/renderer.h"
 #include "command_registry.h"
+#include "option_checks.h"
 
 namespace cogmap::cli {
 namespace {
@@ -196,9 +197,9 @@ const CommandRegistrar kRegistrar{
           ->required();
       sub->add_option("--jobs,-j", args->jobs, "worker threads (default: all cores)");
       sub->add_option("--shard", args->shard, "run only shard K of N, e.g. 3/8 (default 1/1)");
-      sub->add_option(
-          "--out", args->out,
-          "output directory (default sweeps/<sweep name>; for --merge the current one)");
+      sub->add_option("--out", args->out,
+                      "output directory (default sweeps/<sweep name>; for --merge the current one)")
+          ->check(non_empty());
       sub->add_flag("--merge", args->merge, "join results files of shard outputs");
       sub->add_flag("--no-figures", args->no_figures, "skip each run's PNG figures");
       sub->add_flag("--no-plots", args->no_plots, "skip the per-metric plots");

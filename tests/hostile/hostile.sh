@@ -33,7 +33,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
   yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
-  log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote)
+  log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -535,6 +535,13 @@ PY
       cmd=("$cogmap" sweep --merge "$d/results.csv" --out "$d/m" --no-plots); want_rc=2
       want_text="results.csv:3: a quoted field opens here and is never closed"
       check() { [[ ! -e $d/m ]]; } ;;
+    run_out_empty|sweep_out_empty)  # --out "" (an unset variable) wrote to runs/<name>_seed<N>
+      mkdir -p "$d/cwd"; short_experiment e "$W/two_rooms.yaml" 2 >"$d/cwd/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\n' >"$d/cwd/s.sweep.yaml"
+      local sub=(run e.yaml); [[ $what == sweep_out_empty ]] && sub=(sweep s.sweep.yaml)
+      cmd=(bash -c "cd '$d/cwd' && '$cogmap' ${sub[*]} --out ''"); want_rc=2
+      want_text="--out: must not be empty"
+      check() { [[ $(ls -A "$d/cwd" | wc -l) -eq 2 ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }
