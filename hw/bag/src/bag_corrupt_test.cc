@@ -32,6 +32,32 @@ TEST(BagCorrupt, TruncatedFile) {
   const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
   expect_contains(e, path.string() + ": ");
   expect_contains(e, "not a readable ROS 1 bag");
+  // The offsets a user can act on: the file's length and where its header put the index.
+  expect_contains(e, "the file is " + std::to_string(fs::file_size(path)) +
+                         " bytes long, but its header puts the index at byte ");
+  expect_contains(e, "it was cut short");
+}
+
+TEST(BagCorrupt, CutInsideItsHeaderRecord) {
+  const fs::path path = temp_bag("cut_header");
+  bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
+  fs::resize_file(path, 30);  // within the header record's fields (index_pos among them)
+  const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
+  expect_contains(e, "the file is 30 bytes long, but it ends inside its bag header record");
+}
+
+TEST(BagCorrupt, WholeFileNamesNoCut) {
+  // A bag whose index is intact but one message is garbage: no claim that it was cut short.
+  const fs::path path = temp_bag("garbage_not_cut");
+  bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
+  {
+    std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(fs::file_size(path) / 3));
+    const std::string junk(64, '\xff');
+    f.write(junk.data(), static_cast<std::streamsize>(junk.size()));
+  }
+  const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
+  EXPECT_EQ(e.find("cut short"), std::string::npos) << e;
 }
 
 TEST(BagCorrupt, GarbageInsideAChunk) {

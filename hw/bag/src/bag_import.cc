@@ -2,6 +2,7 @@
 // every step come back as LogError with the file name in front.
 #include <exception>
 
+#include "bag_file_probe.h"
 #include "bag_frames.h"
 #include "bag_isolation.h"
 #include "cogmap/hw/bag_import.h"
@@ -41,7 +42,12 @@ ImportedBag import_ros_bag(const std::filesystem::path& path, const BagImportOpt
   } catch (const LogError&) {
     throw;
   } catch (const std::exception& e) {
-    throw LogError(file + ": " + e.what());
+    std::string message = file + ": " + e.what();
+    // rosbag names no offset for a file cut short; its own header says where the index was.
+    if (message.find("not a readable ROS 1 bag") != std::string::npos) {
+      if (const auto cut = bag::describe_truncation(path)) message += " (" + *cut + ")";
+    }
+    throw LogError(message);
   }
 }
 
