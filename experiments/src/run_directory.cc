@@ -185,7 +185,16 @@ std::optional<fs::path> file_in_the_way(const fs::path& folder) {
 RunDirectoryLock::RunDirectoryLock(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw RunDirectoryError(dir.string() + ": cannot create directory: " + ec.message());
+  if (ec) {
+    // A link to nowhere reads as "File exists": say what is there instead.
+    std::error_code link_ec;
+    if (fs::is_symlink(fs::symlink_status(dir, link_ec))) {
+      throw RunDirectoryError(dir.string() + ": is a symbolic link to " +
+                              fs::read_symlink(dir, link_ec).string() +
+                              ", which does not exist; create it or choose another --out");
+    }
+    throw RunDirectoryError(dir.string() + ": cannot create directory: " + ec.message());
+  }
   const fs::path lock = dir / kRunLockName;
   fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0) {

@@ -33,7 +33,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   sonar_stats_stdout_full world_check_stdout_full sweep_merge_write_fails sweep_disk_full
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
   yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
-  log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty)
+  log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty
+  run_out_dangling_link)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -542,6 +543,12 @@ PY
       cmd=(bash -c "cd '$d/cwd' && '$cogmap' ${sub[*]} --out ''"); want_rc=2
       want_text="--out: must not be empty"
       check() { [[ $(ls -A "$d/cwd" | wc -l) -eq 2 ]]; } ;;
+    run_out_dangling_link)  # said "cannot create directory: File exists"
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      ln -s "$d/nowhere" "$d/o"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/o"); want_rc=2
+      want_text="o: is a symbolic link to $d/nowhere, which does not exist; create it or choose another --out"
+      check() { [[ ! -e $d/nowhere && -L $d/o ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }
