@@ -128,7 +128,10 @@ TEST(P2osPeers, SipsThatNeverParseEndTheSessionWithTheReason) {
   const P2osStats stats = robot.stats();
   EXPECT_GE(stats.bad_sips, 10u);
   EXPECT_EQ(stats.sips, 0u);
+  // Bad input (`drive` exit 2), not a lost link; the reason outlives shutdown.
+  EXPECT_EQ(robot.failure_kind(), P2osFailureKind::kBadBytes) << failure;
   robot.shutdown();
+  EXPECT_EQ(robot.failure_kind(), P2osFailureKind::kBadBytes);
   std::lock_guard lock(log_mutex);
   EXPECT_LE(log.size(), 16u);  // a bounded number of lines, not one per SIP
 }
