@@ -38,45 +38,12 @@ int written_line(const YAML::Node& map, std::string_view key_path, int line = 0)
   return line;
 }
 
-// The byte offset where `text` stops being UTF-8 (RFC 3629: no overlong forms, surrogates or
-// code points past U+10FFFF), or npos.
-std::size_t invalid_utf8_at(std::string_view text) {
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const auto b = static_cast<unsigned char>(text[i]);
-    std::size_t n = 0;                   // continuation bytes
-    unsigned char lo = 0x80, hi = 0xBF;  // range of the first continuation byte
-    if (b < 0x80) {
-      n = 0;
-    } else if (b >= 0xC2 && b <= 0xDF) {
-      n = 1;
-    } else if (b >= 0xE0 && b <= 0xEF) {
-      n = 2;
-      if (b == 0xE0) lo = 0xA0;  // overlong
-      if (b == 0xED) hi = 0x9F;  // surrogates
-    } else if (b >= 0xF0 && b <= 0xF4) {
-      n = 3;
-      if (b == 0xF0) lo = 0x90;  // overlong
-      if (b == 0xF4) hi = 0x8F;  // past U+10FFFF
-    } else {
-      return i;
-    }
-    if (n > text.size() - i - 1) return i;
-    for (std::size_t k = 1; k <= n; ++k) {
-      const auto c = static_cast<unsigned char>(text[i + k]);
-      if (k == 1 ? (c < lo || c > hi) : (c < 0x80 || c > 0xBF)) return i;
-    }
-    i += n + 1;
-  }
-  return std::string_view::npos;
-}
-
 // A free text the run writes out (metrics.json, the sweep tables, figure titles). JSON holds
 // UTF-8 only: a name of bytes FF FE ran the whole simulation and then failed writing it, so
 // the text is checked here, where the error can still name the line.
 std::string utf8_text(const Node& node) {
   std::string text = node.as<std::string>();
-  if (const std::size_t at = invalid_utf8_at(text); at != std::string_view::npos) {
+  if (const std::size_t at = yaml::invalid_utf8_at(text); at != std::string_view::npos) {
     std::ostringstream msg;
     msg << "not valid UTF-8 text (byte 0x" << std::hex
         << static_cast<int>(static_cast<unsigned char>(text[at])) << std::dec << " at offset " << at
@@ -191,7 +158,7 @@ bool within(const std::string& inner, const std::string& outer) {
 // An override as the user typed it, on one line and printable: a value may hold newlines,
 // control characters or bytes that are not UTF-8, which a terminal would garble.
 std::string shown(const std::string& override_text) {
-  const bool utf8 = invalid_utf8_at(override_text) == std::string_view::npos;
+  const bool utf8 = yaml::invalid_utf8_at(override_text) == std::string_view::npos;
   std::string out;
   for (const char ch : override_text) {
     const auto b = static_cast<unsigned char>(ch);

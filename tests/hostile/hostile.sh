@@ -34,7 +34,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
   yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
   log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty
-  run_out_dangling_link)
+  run_out_dangling_link experiment_quoted_number set_int_hex_overflow set_value_not_utf8)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -549,6 +549,21 @@ PY
       cmd=("$cogmap" run "$d/e.yaml" --out "$d/o"); want_rc=2
       want_text="o: is a symbolic link to $d/nowhere, which does not exist; create it or choose another --out"
       check() { [[ ! -e $d/nowhere && -L $d/o ]]; } ;;
+    experiment_quoted_number)  # a quoted number is a string in YAML: it ran for 2 s, exit 0
+      short_experiment e "$W/two_rooms.yaml" "'2'" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:3: duration_s: expected a number, got the quoted string '2' (write it without quotes)"
+      check() { [[ ! -e $d/run ]]; } ;;
+    set_int_hex_overflow)  # 0x hex is read for every number key; an int key's range still holds
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --set mapper.em_reference_rooms=0x80000000 --out "$d/run"); want_rc=2
+      want_text="mapper.em_reference_rooms: expected an integer in [-2147483648, 2147483647], got '0x80000000' (from --set mapper.em_reference_rooms=0x80000000)"
+      check() { [[ ! -e $d/run ]]; } ;;
+    set_value_not_utf8)  # yaml-cpp read FF FE as a UTF-16 mark: "name: must not be empty"
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --set $'name=\xff\xfe' --out "$d/run"); want_rc=2
+      want_text='e.yaml:1: name: not valid UTF-8 text (byte 0xff at offset 0); a --set value is YAML text, which must be UTF-8 (from --set name=\xff\xfe)'
+      check() { [[ ! -e $d/run ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

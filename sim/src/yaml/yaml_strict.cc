@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -144,7 +146,87 @@ int second_document_line(const std::string& text) {
   return std::max(second.line, 1);
 }
 
+// An integer as YAML 1.2's core schema writes one: [-+]?[0-9]+ in decimal (a leading 0 is
+// still decimal: 017 is 17, as a double key always read it; yaml-cpp's int conversion took it
+// as octal 15), 0o[0-7]+ in octal or 0x[0-9a-fA-F]+ in hexadecimal (no sign; yaml-cpp read
+// hex for int keys only and never 0o). `fits`: the magnitude fits in 64 bits.
+struct CoreInteger {
+  bool negative = false;
+  std::uint64_t magnitude = 0;
+  bool fits = true;
+};
+
+std::optional<CoreInteger> core_integer(std::string_view s) {
+  CoreInteger out;
+  int base = 10;
+  if (s.starts_with("0x") || s.starts_with("0o")) {
+    base = s[1] == 'x' ? 16 : 8;
+    s.remove_prefix(2);
+  } else if (s.starts_with('-') || s.starts_with('+')) {
+    out.negative = s[0] == '-';
+    s.remove_prefix(1);
+  }
+  if (s.empty()) return std::nullopt;  // "0x", "-"
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out.magnitude, base);
+  if (end != s.data() + s.size()) return std::nullopt;  // "0xZZ", "1.5", "-0x10"
+  if (ec == std::errc::result_out_of_range) {
+    out.fits = false;
+  } else if (ec != std::errc()) {
+    return std::nullopt;
+  }
+  return out;
+}
+
+// Refuses a scalar YAML reads as a string whatever its text, where a number or a boolean is
+// expected: a quoted one ('2', "7"; yaml-cpp tags it "!", a plain scalar "?" and a node built
+// in code not at all) or one tagged !!str or a tag of its own. Quoted numbers used to be read
+// as numbers. `readable`: whether the text would have been accepted without the quotes.
+void refuse_strings(const Node& node, const std::string& expected, bool readable) {
+  const std::string& tag = node.raw().Tag();
+  constexpr std::string_view kCore = "tag:yaml.org,2002:";
+  if (tag.empty() || tag == "?" || (tag.starts_with(kCore) && !tag.ends_with(":str"))) return;
+  const std::string& text = node.raw().Scalar();
+  if (tag != "!") {
+    const std::string shown = tag.starts_with(kCore) ? "!!" + tag.substr(kCore.size()) : tag;
+    node.fail("expected " + expected + ", got '" + text + "' tagged " + shown);
+  }
+  if (text.empty()) node.fail("expected " + expected + ", got the empty string ''");
+  node.fail("expected " + expected + ", got the quoted string '" + text + "'" +
+            (readable ? " (write it without quotes)" : ""));
+}
+
 }  // namespace
+
+std::size_t invalid_utf8_at(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    std::size_t n = 0;                   // continuation bytes
+    unsigned char lo = 0x80, hi = 0xBF;  // range of the first continuation byte
+    if (b < 0x80) {
+      n = 0;
+    } else if (b >= 0xC2 && b <= 0xDF) {
+      n = 1;
+    } else if (b >= 0xE0 && b <= 0xEF) {
+      n = 2;
+      if (b == 0xE0) lo = 0xA0;  // overlong
+      if (b == 0xED) hi = 0x9F;  // surrogates
+    } else if (b >= 0xF0 && b <= 0xF4) {
+      n = 3;
+      if (b == 0xF0) lo = 0x90;  // overlong
+      if (b == 0xF4) hi = 0x8F;  // past U+10FFFF
+    } else {
+      return i;
+    }
+    if (n > text.size() - i - 1) return i;
+    for (std::size_t k = 1; k <= n; ++k) {
+      const auto c = static_cast<unsigned char>(text[i + k]);
+      if (k == 1 ? (c < lo || c > hi) : (c < 0x80 || c > 0xBF)) return i;
+    }
+    i += n + 1;
+  }
+  return std::string_view::npos;
+}
 
 ConfigError::ConfigError(std::string file, int line, std::string key, const std::string& message)
     : std::runtime_error(describe(file, line, key, message)),
@@ -290,38 +372,59 @@ std::vector<std::string> Node::keys() const {
 template <>
 double Node::as<double>() const {
   if (!node_.IsScalar()) fail("expected a number");
+  const std::string& text = node_.Scalar();
   double v = 0.0;
-  if (!YAML::convert<double>::decode(node_, v) || !std::isfinite(v)) {
-    fail("expected a finite number, got '" + node_.Scalar() + "'");
+  std::optional<CoreInteger> n;  // 0x/0o: a core-schema integer, as an int key reads it
+  if (text.starts_with("0x") || text.starts_with("0o")) n = core_integer(text);
+  const bool ok = n ? n->fits : YAML::convert<double>::decode(node_, v) && std::isfinite(v);
+  if (n) v = static_cast<double>(n->magnitude);
+  refuse_strings(*this, "a number", ok);
+  if (n && !n->fits) {
+    fail("expected a number, got '" + text +
+         "': hexadecimal and octal numbers must fit in 64 bits");
   }
+  if (!ok) fail("expected a finite number, got '" + text + "'");
   return v;
 }
 
 template <>
 int Node::as<int>() const {
   if (!node_.IsScalar()) fail("expected an integer");
-  int v = 0;
-  if (!YAML::convert<int>::decode(node_, v))
-    fail("expected an integer, got '" + node_.Scalar() + "'");
-  return v;
+  const std::string& text = node_.Scalar();
+  const auto n = core_integer(text);
+  refuse_strings(*this, "an integer", n.has_value());
+  if (!n) fail("expected an integer, got '" + text + "'");
+  using Limits = std::numeric_limits<int>;
+  const std::uint64_t most = n->negative ? std::uint64_t{1} + Limits::max() : Limits::max();
+  if (!n->fits || n->magnitude > most) {
+    fail("expected an integer in [" + std::to_string(Limits::min()) + ", " +
+         std::to_string(Limits::max()) + "], got '" + text + "'");
+  }
+  const auto m = static_cast<std::int64_t>(n->magnitude);
+  return static_cast<int>(n->negative ? -m : m);
 }
 
 template <>
 std::uint64_t Node::as<std::uint64_t>() const {
-  if (!node_.IsScalar() || node_.Scalar().starts_with("-")) fail("expected a non-negative integer");
-  std::uint64_t v = 0;
-  if (!YAML::convert<std::uint64_t>::decode(node_, v)) {
-    fail("expected a non-negative integer, got '" + node_.Scalar() + "'");
+  if (!node_.IsScalar()) fail("expected a non-negative integer");
+  const std::string& text = node_.Scalar();
+  const auto n = core_integer(text);
+  refuse_strings(*this, "a non-negative integer", n && !n->negative);
+  if (!n || n->negative) fail("expected a non-negative integer, got '" + text + "'");
+  if (!n->fits) {
+    fail("expected a non-negative integer of at most " +
+         std::to_string(std::numeric_limits<std::uint64_t>::max()) + ", got '" + text + "'");
   }
-  return v;
+  return n->magnitude;
 }
 
 template <>
 bool Node::as<bool>() const {
   if (!node_.IsScalar()) fail("expected true or false");
   bool v = false;
-  if (!YAML::convert<bool>::decode(node_, v))
-    fail("expected true or false, got '" + node_.Scalar() + "'");
+  const bool ok = YAML::convert<bool>::decode(node_, v);
+  refuse_strings(*this, "true or false", ok);
+  if (!ok) fail("expected true or false, got '" + node_.Scalar() + "'");
   return v;
 }
 
@@ -343,6 +446,15 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   for (std::string part; std::getline(keys, part, '.');) {
     if (part.empty()) throw ConfigError("--set", 0, key, "empty key component");
     parts.push_back(part);
+  }
+  // YAML is UTF-8 (or UTF-16/32 with a byte order mark): yaml-cpp read a value starting with
+  // bytes FF FE as UTF-16 and said something about the text it made of them.
+  if (const std::size_t at = invalid_utf8_at(value_text); at != std::string::npos) {
+    std::ostringstream msg;
+    msg << "not valid UTF-8 text (byte 0x" << std::hex
+        << static_cast<int>(static_cast<unsigned char>(value_text[at])) << std::dec << " at offset "
+        << at << "); a --set value is YAML text, which must be UTF-8";
+    throw ConfigError("--set", 0, key, msg.str());
   }
   YAML::Node value;
   try {

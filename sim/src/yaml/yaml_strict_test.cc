@@ -165,5 +165,142 @@ TEST(YamlStrict, OverrideValueWithASecondDocumentIsRefused) {
   EXPECT_EQ(root.raw()["duration_s"].as<double>(), 3.0);
 }
 
+// A quoted scalar is a string in YAML: `duration_s: '2'` and `seed: "7"` were read as numbers,
+// `flag: 'true'` as a boolean. yaml-cpp tags quoted scalars "!" and plain ones "?".
+TEST(YamlStrict, QuotedScalarIsNotANumberOrABoolean) {
+  const Node root = Node::load_string(
+      "a: '2'\nb: \"7\"\nc: 'true'\nd: 'abc'\ne: ''\nf: !!str 3\ng: !!int 4\nh: 2\ni: true\n",
+      "q.yaml");
+  ASSERT_EQ(root["a"].raw().Tag(), "!");
+  ASSERT_EQ(root["h"].raw().Tag(), "?");
+  EXPECT_EQ(config_error_of([&] { root.get<double>("a"); }),
+            "q.yaml:1: a: expected a number, got the quoted string '2' (write it without quotes)");
+  EXPECT_EQ(
+      config_error_of([&] { root.get<int>("b"); }),
+      "q.yaml:2: b: expected an integer, got the quoted string '7' (write it without quotes)");
+  EXPECT_EQ(config_error_of([&] { root.get<std::uint64_t>("b"); }),
+            "q.yaml:2: b: expected a non-negative integer, got the quoted string '7' (write it "
+            "without quotes)");
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("c"); }),
+            "q.yaml:3: c: expected true or false, got the quoted string 'true' (write it without "
+            "quotes)");
+  // No advice to drop quotes that would not help.
+  EXPECT_EQ(config_error_of([&] { root.get<double>("d"); }),
+            "q.yaml:4: d: expected a number, got the quoted string 'abc'");
+  EXPECT_EQ(config_error_of([&] { root.get<double>("e"); }),
+            "q.yaml:5: e: expected a number, got the empty string ''");
+  EXPECT_EQ(config_error_of([&] { root.get<int>("f"); }),
+            "q.yaml:6: f: expected an integer, got '3' tagged !!str");
+  EXPECT_EQ(root.get<int>("g"), 4);
+  EXPECT_EQ(root.get<double>("h"), 2.0);
+  EXPECT_TRUE(root.get<bool>("i"));
+  EXPECT_EQ(root.get<std::string>("a"), "2");  // a string key takes it as it is
+  // A node built in code has no tag (--seed sets `seed` so): a number, not a string.
+  Node built = Node::load_string("a: 1\n", "b.yaml");
+  built.raw()["seed"] = std::uint64_t{9};
+  EXPECT_EQ(built.get<std::uint64_t>("seed"), 9u);
+}
+
+// One rule for every number key: YAML 1.2 core-schema integers (decimal, 0o octal, 0x hex) read
+// the same as an int, a uint64 or a double. yaml-cpp read 0x10 as 16 for int keys but refused it
+// for double keys, never read 0o17, and read 017 as octal 15 for int keys but 17 for doubles.
+TEST(YamlStrict, HexAndOctalIntegersReadAlikeForEveryNumberKey) {
+  const Node root = Node::load_string(
+      "x: 0x10\no: 0o17\nz: 017\np: +5\nbig: 0xffffffffffffffff\nf: 2.5e1\n", "n.yaml");
+  for (const auto& [key, want] : {std::pair{"x", 16}, {"o", 15}, {"z", 17}, {"p", 5}}) {
+    EXPECT_EQ(root.get<int>(key), want) << key;
+    EXPECT_EQ(root.get<std::uint64_t>(key), static_cast<std::uint64_t>(want)) << key;
+    EXPECT_EQ(root.get<double>(key), static_cast<double>(want)) << key;
+  }
+  EXPECT_EQ(root.get<std::uint64_t>("big"), 18446744073709551615u);
+  EXPECT_EQ(root.get<double>("big"), 18446744073709551615.0);
+  EXPECT_EQ(root.get<double>("f"), 25.0);
+  EXPECT_EQ(config_error_of([&] { root.get<int>("f"); }),
+            "n.yaml:6: f: expected an integer, got '2.5e1'");
+}
+
+TEST(YamlStrict, IntegersOutOfRangeOrMalformedAreRefusedAtTheirLine) {
+  const Node root = Node::load_string(
+      "i: 2147483648\nh: 0x80000000\nn: -2147483649\nlo: -2147483648\nu: 0x10000000000000000\n"
+      "d: 18446744073709551616\nx: 0x\nz: 0xZZ\no: 0o8\ns: -0x10\nX: 0X10\nm: -3\n",
+      "r.yaml");
+  const std::string int_range = "expected an integer in [-2147483648, 2147483647], got ";
+  EXPECT_EQ(config_error_of([&] { root.get<int>("i"); }),
+            "r.yaml:1: i: " + int_range + "'2147483648'");
+  EXPECT_EQ(config_error_of([&] { root.get<int>("h"); }),
+            "r.yaml:2: h: " + int_range + "'0x80000000'");
+  EXPECT_EQ(config_error_of([&] { root.get<int>("n"); }),
+            "r.yaml:3: n: " + int_range + "'-2147483649'");
+  EXPECT_EQ(root.get<int>("lo"), -2147483648);
+  EXPECT_EQ(root.get<double>("h"), 2147483648.0);  // in range for a double key
+  EXPECT_EQ(config_error_of([&] { root.get<std::uint64_t>("u"); }),
+            "r.yaml:5: u: expected a non-negative integer of at most 18446744073709551615, got "
+            "'0x10000000000000000'");
+  EXPECT_EQ(config_error_of([&] { root.get<std::uint64_t>("d"); }),
+            "r.yaml:6: d: expected a non-negative integer of at most 18446744073709551615, got "
+            "'18446744073709551616'");
+  EXPECT_EQ(config_error_of([&] { root.get<double>("u"); }),
+            "r.yaml:5: u: expected a number, got '0x10000000000000000': hexadecimal and octal "
+            "numbers must fit in 64 bits");
+  EXPECT_EQ(config_error_of([&] { root.get<std::uint64_t>("m"); }),
+            "r.yaml:12: m: expected a non-negative integer, got '-3'");
+  // Not core-schema integers: no digits, bad digits, a sign or a capital X before hex.
+  int line = 7;
+  for (const char* key : {"x", "z", "o", "s", "X"}) {
+    const std::string text = root[key].as<std::string>();
+    const std::string at = "r.yaml:" + std::to_string(line++) + ": " + key + ": ";
+    EXPECT_EQ(config_error_of([&] { root.get<int>(key); }),
+              at + "expected an integer, got '" + text + "'");
+    EXPECT_EQ(config_error_of([&] { root.get<std::uint64_t>(key); }),
+              at + "expected a non-negative integer, got '" + text + "'");
+    EXPECT_EQ(config_error_of([&] { root.get<double>(key); }),
+              at + "expected a finite number, got '" + text + "'");
+  }
+}
+
+// --set values are parsed as YAML too: the same rule as a file's values.
+TEST(YamlStrict, OverrideValuesFollowTheNumberRule) {
+  Node root = Node::load_string("seed: 1\nduration_s: 10\n", "e.yaml");
+  apply_override(root.raw(), "seed=0x10");
+  EXPECT_EQ(root.get<std::uint64_t>("seed"), 16u);
+  apply_override(root.raw(), "duration_s=0o20");
+  EXPECT_EQ(root.get<double>("duration_s"), 16.0);
+  apply_override(root.raw(), "duration_s='2'");
+  EXPECT_NE(config_error_of([&] { root.get<double>("duration_s"); })
+                .find("duration_s: expected a number, got the quoted string '2' (write it without "
+                      "quotes)"),
+            std::string::npos);
+  apply_override(root.raw(), "duration_s=");  // an empty value is the empty string
+  EXPECT_NE(config_error_of([&] {
+              root.get<double>("duration_s");
+            }).find("duration_s: expected a number, got the empty string ''"),
+            std::string::npos);
+}
+
+// yaml-cpp reads a text starting with FF FE as UTF-16: `--set $'name=\xff\xfe'` was refused
+// for what the bytes became. A value that is not UTF-8 is named as such, with the byte offset.
+TEST(YamlStrict, OverrideValueThatIsNotUtf8NamesTheByte) {
+  Node root = Node::load_string("name: a\n", "e.yaml");
+  EXPECT_EQ(config_error_of([&] { apply_override(root.raw(), "name=\xff\xfe"); }),
+            "--set: name: not valid UTF-8 text (byte 0xff at offset 0); a --set value is YAML "
+            "text, which must be UTF-8");
+  EXPECT_EQ(config_error_of([&] { apply_override(root.raw(), "name=r\xc3\xa4um\xc3"); }),
+            "--set: name: not valid UTF-8 text (byte 0xc3 at offset 5); a --set value is YAML "
+            "text, which must be UTF-8");
+  EXPECT_EQ(root.get<std::string>("name"), "a");  // untouched
+  apply_override(root.raw(), "name=r\xc3\xa4ume");
+  EXPECT_EQ(root.get<std::string>("name"), "r\xc3\xa4ume");
+}
+
+TEST(YamlStrict, InvalidUtf8AtFindsTheFirstBadByte) {
+  EXPECT_EQ(invalid_utf8_at("plain r\xc3\xa4ume \xe2\x9c\x93 \xf0\x9d\x84\x9e"),
+            std::string_view::npos);
+  EXPECT_EQ(invalid_utf8_at("ab\xff"), 2u);
+  EXPECT_EQ(invalid_utf8_at("\xc0\xaf"), 0u);          // overlong "/"
+  EXPECT_EQ(invalid_utf8_at("x\xed\xa0\x80"), 1u);     // a UTF-16 surrogate
+  EXPECT_EQ(invalid_utf8_at("\xf4\x90\x80\x80"), 0u);  // past U+10FFFF
+  EXPECT_EQ(invalid_utf8_at("ok\xe2\x9c"), 2u);        // cut short
+}
+
 }  // namespace
 }  // namespace cogmap::yaml

@@ -84,7 +84,11 @@ class Node {
   /// The keys of a mapping, in file order.
   std::vector<std::string> keys() const;
 
-  /// Converts a scalar; throws ConfigError naming the expected type.
+  /// Converts a scalar; throws ConfigError naming the expected type. Numbers and booleans
+  /// follow one rule (docs/experiment-format.md "Numbers"): a plain scalar only (a quoted one
+  /// is a string in YAML: '2' is refused, not read as 2); integers as YAML 1.2's core schema
+  /// writes them (decimal, 0o octal, 0x hexadecimal) for int, uint64 and double keys alike,
+  /// within the key type's range.
   template <typename T>
   T as() const;
   /// Required key of type T.
@@ -111,10 +115,15 @@ class Node {
   int key_line_ = 0;  ///< line of the key this node is the value of; 0 for none or unknown
 };
 
+/// The byte offset where `text` stops being UTF-8 (RFC 3629: no overlong forms, surrogates or
+/// code points past U+10FFFF), or std::string_view::npos when all of it is.
+std::size_t invalid_utf8_at(std::string_view text);
+
 /// Applies one `--set a.b.c=value` override to a document: walks (creating mappings as needed)
 /// and sets the leaf to `value` parsed as YAML (so "55", "true", "[1, 2]" keep their types).
-/// Throws ConfigError (file "--set") for a malformed assignment or a value that breaks the
-/// load checks (a list as a key, a duplicate key).
+/// Throws ConfigError (file "--set") for a malformed assignment, a value that is not UTF-8
+/// (yaml-cpp read a value starting with bytes FF FE as UTF-16) or one that breaks the load
+/// checks (a list as a key, a duplicate key).
 void apply_override(YAML::Node& root, const std::string& assignment);
 
 template <>
