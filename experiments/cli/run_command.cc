@@ -113,6 +113,9 @@ int run(const RunArgs& args) {
   // frame loop's one big piece of parallel work (docs/performance.md "Pings on two threads").
   options.sonar_threads =
       args.threads > 0 ? args.threads : (experiments::usable_cores() >= 2 ? 2 : 1);
+  options.on_warning = [](const std::string& warning) {
+    std::cerr << "cogmap run: " << warning << "\n";
+  };
   experiments::ProgressBar bar(experiments::ProgressBar::stderr_is_terminal());
   options.on_progress = [&bar](double t_s, double duration_s) {
     bar.update(t_s / duration_s, "t = " + std::to_string(static_cast<long>(t_s)) + " s");

@@ -1,5 +1,6 @@
 // `cogmap world check FILE...`: validates world files and prints one summary line each
-// (docs/worlds.md). Exit 0 when all are valid, 1 when any is not, 2 on bad usage.
+// (docs/worlds.md). Exit 0 when all are valid, 1 when any is not, 2 on bad usage. A start the
+// walls do not enclose is a warning on stderr, which changes neither the line nor the exit code.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cogmap/sim/world_enclosure.h"
 #include "cogmap/sim/world_spec.h"
 #include "command_registry.h"
 
@@ -55,7 +57,11 @@ void add_world_command(CLI::App& app, int& exit_code) {
     bool all_ok = true;
     for (const std::string& path : *files) {
       try {
-        std::cout << summary(path, sim::load_world(path)) << '\n';
+        const sim::WorldSpec world = sim::load_world(path);
+        std::cout << summary(path, world) << '\n';
+        if (const auto warning = sim::start_enclosure_warning(world, world.start.translation())) {
+          std::cerr << path << ':' << world.start_source.line << ": warning: " << *warning << '\n';
+        }
       } catch (const yaml::ConfigError& e) {
         std::cout << "ERROR " << e.what() << '\n';
         all_ok = false;

@@ -5,6 +5,7 @@
 
 #include "cogmap/experiments/runner.h"
 #include "cogmap/sim/sim_robot.h"
+#include "cogmap/sim/world_enclosure.h"
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
 
@@ -50,6 +51,15 @@ RunSummary run_experiment(const Experiment& experiment, const RunOptions& option
   }
   sim::WorldSpec world = load_world_of(experiment);
   if (experiment.start) world.start = *experiment.start;
+  if (options.on_warning) {
+    if (const auto w = sim::start_enclosure_warning(world, world.start.translation())) {
+      // The world's own start at its line; an experiment's `start` (no line kept) at its file.
+      options.on_warning(
+          (experiment.start ? experiment.file.string()
+                            : world.file.string() + ":" + std::to_string(world.start_source.line)) +
+          ": warning: " + *w);
+    }
+  }
   const sim::SimRobotOptions robot_options = sim::parse_sim_robot_options(robot_block);
   std::unique_ptr<sim::SimRobot> robot;
   try {

@@ -34,7 +34,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   run_set_missing_world world_start_theta_huge experiment_start_theta_huge world_box_angle_huge
   yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
   log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty
-  run_out_dangling_link experiment_quoted_number set_int_hex_overflow set_value_not_utf8)
+  run_out_dangling_link experiment_quoted_number set_int_hex_overflow set_value_not_utf8
+  world_check_start_outside run_start_outside)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -564,6 +565,17 @@ PY
       cmd=("$cogmap" run "$d/e.yaml" --set $'name=\xff\xfe' --out "$d/run"); want_rc=2
       want_text='e.yaml:1: name: not valid UTF-8 text (byte 0xff at offset 0); a --set value is YAML text, which must be UTF-8 (from --set name=\xff\xfe)'
       check() { [[ ! -e $d/run ]]; } ;;
+    world_check_start_outside)  # OK and nothing else: the robot would have heard nothing
+      printf 'name: w\nwalls: {polylines: [[[0,0],[10,0],[10,10],[0,10],[0,0]]]}\nstart: {x_m: 15, y_m: 5}\n' >"$d/w.yaml"
+      cmd=("$cogmap" world check "$d/w.yaml"); want_rc=0
+      want_text="w.yaml:3: warning: start (15.00, 5.00) is not enclosed by walls: 23 of 32 directions from it meet no wall or obstacle"
+      check() { [[ $("$cogmap" world check "$d/w.yaml" 2>/dev/null) == "OK $d/w.yaml: "* ]]; } ;;
+    run_start_outside)  # the run warns once on stderr and runs as before
+      printf 'name: w\nwalls: {polylines: [[[0,0],[10,0]]]}\nstart: {x_m: 5, y_m: 2}\n' >"$d/w.yaml"
+      short_experiment e w.yaml 1 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=0
+      want_text="cogmap run: $d/w.yaml:3: warning: start (5.00, 2.00) is not enclosed by walls: 19 of 32"
+      check() { [[ -s $d/run/metrics.json && $(grep -c warning: <<<"$text") -eq 1 ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

@@ -39,6 +39,10 @@ struct RunOptions {
   int sonar_threads = 1;
   /// Called about once a simulated second with the time reached (progress bars); may be empty.
   std::function<void(double time_s, double duration_s)> on_progress;
+  /// Called before the run starts with a warning about its input that does not stop it, as
+  /// "FILE[:LINE]: warning: ..." (a start the walls do not enclose: docs/worlds.md); may be
+  /// empty. The run and its outputs are the same either way.
+  std::function<void(const std::string& warning)> on_warning;
 };
 
 /// The outcome of a finished run.
