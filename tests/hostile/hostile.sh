@@ -35,7 +35,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   yaml_nested_5000 log_fifo sonar_stats_fifo room_grid_cells_10mm room_grid_extent_2000m
   log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty
   run_out_dangling_link experiment_quoted_number set_int_hex_overflow set_value_not_utf8
-  world_check_start_outside run_start_outside)
+  world_check_start_outside run_start_outside bag_undeclared_connection)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -576,6 +576,47 @@ PY
       cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=0
       want_text="cogmap run: $d/w.yaml:3: warning: start (5.00, 2.00) is not enclosed by walls: 19 of 32"
       check() { [[ -s $d/run/metrics.json && $(grep -c warning: <<<"$text") -eq 1 ]]; } ;;
+    bag_undeclared_connection)  # a chunk info names a connection no record declares: "no sonar topic"
+      [[ -e $(dirname "$cogmap")/../lib/cogmap/libcogmap_ros_bag_plugin.so ]] ||
+        { echo "SKIP: built without the ROS bag reader"; exit 77; }
+      command -v python3 >/dev/null || { echo "SKIP: no python3"; exit 77; }
+      python3 - >"$d/b.bag" <<'PY'
+import struct, sys
+u32, u64 = (lambda v: struct.pack("<I", v)), (lambda v: struct.pack("<Q", v))
+def fields(fs):
+    return b"".join(u32(len(k) + 1 + len(v)) + k.encode() + b"=" + v for k, v in fs)
+def record(header, data):
+    h = fields(header)
+    return u32(len(h)) + h + u32(len(data)) + data
+def conn(c, topic, type_):
+    return record([("op", b"\x07"), ("conn", u32(c)), ("topic", topic)],
+                  fields([("topic", topic), ("type", type_), ("md5sum", b"0" * 32),
+                          ("message_definition", b"")]))
+def message(c):
+    return record([("op", b"\x02"), ("conn", u32(c)), ("time", u32(100) + u32(0))], bytes(8))
+def bag_header(index_pos):  # padded to 4096 bytes, as rosbag writes it
+    h = fields([("op", b"\x03"), ("index_pos", u64(index_pos)), ("conn_count", u32(1)),
+                ("chunk_count", u32(1))])
+    return u32(len(h)) + h + u32(4096 - len(h)) + b" " * (4096 - len(h))
+# One chunk: the odometry's connection record, one message of connection 0 and one of 1.
+data = conn(0, b"/RosAria/pose", b"nav_msgs/Odometry")
+offsets = [len(data), len(data) + len(message(0))]
+data += message(0) + message(1)
+chunk = record([("op", b"\x05"), ("compression", b"none"), ("size", u32(len(data)))], data)
+index = b"".join(record([("op", b"\x04"), ("ver", u32(1)), ("conn", u32(c)), ("count", u32(1))],
+                        u32(100) + u32(0) + u32(offsets[c])) for c in (0, 1))
+magic = b"#ROSBAG V2.0\n"
+chunk_pos = len(magic) + len(bag_header(0))
+info = record([("op", b"\x06"), ("ver", u32(1)), ("chunk_pos", u64(chunk_pos)),
+               ("start_time", u32(100) + u32(0)), ("end_time", u32(100) + u32(0)),
+               ("count", u32(2))], u32(0) + u32(1) + u32(1) + u32(1))
+# The index declares connection 0 only; its chunk info counts a message of 1 as well.
+sys.stdout.buffer.write(magic + bag_header(chunk_pos + len(chunk) + len(index)) + chunk + index +
+                        conn(0, b"/RosAria/pose", b"nav_msgs/Odometry") + info)
+PY
+      cmd=("$cogmap" replay "$d/b.bag" --robot p3dx --out "$d/run"); want_rc=2
+      want_text="b.bag: the chunk info record at byte 4742 names connection 1 (1 message in the chunk at byte 4117), but no connection record declares connection 1 (the index declares 0 /RosAria/pose): the bag's index is damaged"
+      check() { [[ ! -e $d/run ]]; } ;;
     *) echo "unknown case $what"; exit 2 ;;
   esac
 }

@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 
+#include "bag_index_check.h"
 #include "sonar_array_decoder.h"
 
 namespace cogmap::hw::bag {
@@ -238,6 +239,8 @@ class OnePublisher {
 }  // namespace
 
 std::vector<TopicInfo> list_topics(const std::string& path) {
+  // rosbag trusts the index it is about to read: check it against the records first.
+  check_bag_index(path);
   rosbag::Bag bag;
   open_bag(bag, path);
   try {

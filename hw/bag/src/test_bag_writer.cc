@@ -153,9 +153,11 @@ struct TestBagWriter::Impl {
   }
 };
 
-TestBagWriter::TestBagWriter(const std::string& path, Compression compression)
+TestBagWriter::TestBagWriter(const std::string& path, Compression compression,
+                             unsigned chunk_threshold)
     : impl_(std::make_unique<Impl>()) {
   impl_->bag.open(path, rosbag::bagmode::Write);
+  if (chunk_threshold > 0) impl_->bag.setChunkThreshold(chunk_threshold);
   if (compression == Compression::kBz2) impl_->bag.setCompression(rosbag::compression::BZ2);
   if (compression == Compression::kLz4) impl_->bag.setCompression(rosbag::compression::LZ4);
 }

@@ -34,7 +34,9 @@ struct Publisher {
 /// Writes one bag; closed by close() or the destructor.
 class TestBagWriter {
  public:
-  explicit TestBagWriter(const std::string& path, Compression compression = Compression::kNone);
+  /// `chunk_threshold`: bytes after which rosbag closes a chunk (0: rosbag's 768 KiB).
+  explicit TestBagWriter(const std::string& path, Compression compression = Compression::kNone,
+                         unsigned chunk_threshold = 0);
   ~TestBagWriter();
 
   /// nav_msgs/Odometry (frame odom, child base_link). Every message is recorded at its stamp
