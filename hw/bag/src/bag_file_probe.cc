@@ -8,6 +8,9 @@
 #include <system_error>
 #include <vector>
 
+#include "bag_index.h"
+#include "bag_records.h"
+
 namespace cogmap::hw::bag {
 namespace {
 
@@ -62,6 +65,36 @@ std::optional<std::string> describe_truncation(const std::filesystem::path& path
     at += field_len;
   }
   return std::nullopt;
+}
+
+std::uint64_t bag_content_bytes(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) return 0;
+  try {
+    const records::FileBytes file(path.string());
+    std::string why;
+    const auto header = records::read_record(file, kMagic.size(), size, why);
+    if (!header || header->op != records::kBagHeader) return size;
+    const std::uint64_t index_pos = records::u64(header->fields, "index_pos").value_or(0);
+    const std::uint64_t end = index_pos > 0 && index_pos <= size ? index_pos : size;
+    std::uint64_t unpacked = 0;
+    for (std::uint64_t pos = header->end(); pos < end;) {
+      const auto r = records::read_record(file, pos, end, why);
+      if (!r) break;
+      const auto compression = r->fields.find("compression");
+      if (r->op == records::kChunk && compression != r->fields.end() &&
+          compression->second != "none") {
+        const std::uint64_t chunk =
+            std::min<std::uint64_t>(records::u32(r->fields, "size").value_or(0), kMaxChunkBytes);
+        if (chunk > r->data_len) unpacked += chunk - r->data_len;
+      }
+      pos = r->end();
+    }
+    return size + unpacked;
+  } catch (const std::exception&) {
+    return size;  // a read that failed midway: the reader says why
+  }
 }
 
 }  // namespace cogmap::hw::bag

@@ -3,14 +3,40 @@
 #include "bag_isolation.h"
 
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <limits>
+#include <new>
 #include <stdexcept>
 #include <type_traits>
+
+#include "bag_file_probe.h"
+
+// A sanitizer's runtime reserves terabytes of address space for its shadow memory, and maps
+// more as the program runs: an address-space cap would make it fail, not the bag.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__) || defined(__SANITIZE_HWADDRESS__)
+#define COGMAP_BAG_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+    __has_feature(memory_sanitizer) || __has_feature(hwaddress_sanitizer)
+#define COGMAP_BAG_SANITIZED 1
+#endif
+#endif
+#ifndef COGMAP_BAG_SANITIZED
+// This file built without one, but linked into a program that has one (a fuzz target).
+extern "C" {
+void __asan_init() __attribute__((weak));
+void __tsan_init() __attribute__((weak));
+void __msan_init() __attribute__((weak));
+}
+#endif
 
 namespace cogmap::hw::bag {
 namespace {
@@ -74,6 +100,47 @@ class In {
 };
 
 constexpr std::uint8_t kOk = 0, kError = 1;
+
+// "topic T, message K: " while the child reads a message, else "".
+std::string place(const Progress& p) {
+  return p.started ? "topic " + std::string(p.topic) + ", message " + std::to_string(p.index) + ": "
+                   : "";
+}
+
+bool sanitized() {
+#ifdef COGMAP_BAG_SANITIZED
+  return true;
+#else
+  return &__asan_init != nullptr || &__tsan_init != nullptr || &__msan_init != nullptr;
+#endif
+}
+
+// The address space this process maps now (VmSize), 0 when /proc cannot say.
+std::uint64_t mapped_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t pages = 0;
+  if (!(statm >> pages)) return 0;
+  return pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+}
+
+std::uint64_t add(std::uint64_t a, std::uint64_t b) {
+  return a > std::numeric_limits<std::uint64_t>::max() - b
+             ? std::numeric_limits<std::uint64_t>::max()
+             : a + b;
+}
+
+std::string gib(std::uint64_t bytes) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.1f GiB", static_cast<double>(bytes) / (1u << 30));
+  return s;
+}
+
+std::string bag_size(std::uint64_t bytes) {
+  if (bytes < 1'000'000) return std::to_string(bytes) + " bytes";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.1f MB", static_cast<double>(bytes) / 1e6);
+  return s;
+}
 
 std::string encode(const BagContents& c) {
   Out o;
@@ -150,8 +217,18 @@ void write_all(int fd, const std::string& bytes) {
   }
 }
 
+std::string error_reply(const std::string& message) {
+  Out o;
+  o.pod(kError);
+  o.str(message);
+  return o.bytes();
+}
+
 [[noreturn]] void child(int fd, Progress* progress, const std::string& path,
                         const BagImportOptions& options, std::size_t max_transducers) {
+  // Before anything reads the bag or loads the ROS libraries.
+  const std::uint64_t content = bag_content_bytes(path);
+  const std::uint64_t limit = limit_address_space(reader_memory_budget(content));
   std::string reply;
   try {
     BagContents c;
@@ -163,17 +240,15 @@ void write_all(int fd, const std::string& bytes) {
           progress->index = i;
           progress->started = true;
         });
+    progress->started = false;  // the messages are read
     reply = encode(c);
+  } catch (const std::bad_alloc&) {
+    // The reader lets it through (ros_bag_reader.cc) for this: unwound, the memory is free.
+    reply = error_reply(out_of_memory_message(place(*progress), limit, content));
   } catch (const std::exception& e) {
-    Out o;
-    o.pod(kError);
-    o.str(e.what());
-    reply = o.bytes();
+    reply = error_reply(e.what());
   } catch (...) {
-    Out o;
-    o.pod(kError);
-    o.str("the ROS bag library threw an unknown exception");
-    reply = o.bytes();
+    reply = error_reply("the ROS bag library threw an unknown exception");
   }
   write_all(fd, reply);
   ::close(fd);
@@ -181,6 +256,56 @@ void write_all(int fd, const std::string& bytes) {
 }
 
 }  // namespace
+
+// The budget must stay out of reach of any intact bag. What grows with the bag while the child
+// reads it: rosbag's index (~64 bytes a message), the streams read (a PointCloud of 16 points,
+// ~280 bytes in the file, becomes two vectors of 16 doubles, ~350 bytes with its own), and the
+// reply encoded from them, each up to 3 times that for a moment while a vector or string
+// doubles. A message takes at least ~80 bytes of the bag (a record header of ~45 bytes, an
+// index entry of 12, a header stamp), so at worst ~6 bytes of memory a byte of the bag.
+// Measured (docs/reliability.md "Limits"): a 211 MB bag of 200 000 clouds of 16 points and
+// 200 000 odometry messages peaked at 330 MB of address space (334 MB read from a 34 MB bz2
+// copy), 1 000 000 empty clouds and 10 000 odometry messages (101 MB) at 264 MB: 1.5 and 2.5
+// bytes a byte, the ROS libraries' ~20 MB included. What does not grow with the bag: rosbag's
+// and the index check's chunk buffers (a chunk is at most 256 MiB unpacked, held packed and
+// unpacked) and one message decoded whole (at most its chunk; roscpp_serialization's objects
+// for it at most ~7 times that, for a cloud of empty channels): under 4 GiB. Hence 4 GiB plus
+// 16 times the content; a damaged length the layout check misses that asks for more (2^31
+// points of 12 bytes: 24 GiB) ends in std::bad_alloc at once instead of paging the machine.
+std::uint64_t reader_memory_budget(std::uint64_t content_bytes) {
+  constexpr std::uint64_t kFixed = std::uint64_t{4} << 30, kPerByte = 16;
+  const std::uint64_t grows = content_bytes > std::numeric_limits<std::uint64_t>::max() / kPerByte
+                                  ? std::numeric_limits<std::uint64_t>::max()
+                                  : content_bytes * kPerByte;
+  return add(kFixed, grows);
+}
+
+bool reader_memory_is_limited() { return !sanitized(); }
+
+std::uint64_t limit_address_space(std::uint64_t budget) {
+  if (sanitized()) return 0;
+  const std::uint64_t mapped = mapped_bytes();
+  if (mapped == 0) return 0;
+  const std::uint64_t limit = add(mapped, budget);
+  rlimit current{};
+  if (::getrlimit(RLIMIT_AS, &current) != 0) return 0;
+  if (current.rlim_cur != RLIM_INFINITY && current.rlim_cur <= limit) return current.rlim_cur;
+  const rlimit capped{static_cast<rlim_t>(limit), current.rlim_max};
+  if (::setrlimit(RLIMIT_AS, &capped) != 0) return 0;
+  return limit;
+}
+
+std::string out_of_memory_message(const std::string& where, std::uint64_t limit,
+                                  std::uint64_t content_bytes) {
+  const std::string what = where.empty() ? "the bag" : "this message";
+  if (limit == 0) {
+    return where + "ran out of memory reading " + what +
+           ": a length in the bag is damaged (or the bag is too large for this machine)";
+  }
+  return where + "ran out of memory reading " + what + " (the bag reader may map " + gib(limit) +
+         " for this bag of " + bag_size(content_bytes) +
+         ", more than an intact bag needs): a length in the bag is damaged";
+}
 
 BagContents read_bag_isolated(const std::string& path, const BagImportOptions& options,
                               std::size_t max_transducers) {
@@ -219,11 +344,8 @@ BagContents read_bag_isolated(const std::string& path, const BagImportOptions& o
   }
   if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
-    std::string where = progress->started ? "topic " + std::string(progress->topic) + ", message " +
-                                                std::to_string(progress->index) + ": "
-                                          : "";
-    throw std::runtime_error(where + "the ROS bag library crashed (signal " + std::to_string(sig) +
-                             ", " + ::strsignal(sig) +
+    throw std::runtime_error(place(*progress) + "the ROS bag library crashed (signal " +
+                             std::to_string(sig) + ", " + ::strsignal(sig) +
                              ") reading this message: the bag is corrupt");
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || reply.empty()) {

@@ -16,8 +16,10 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <new>
 
 #include "bag_index_check.h"
+#include "message_layout.h"
 #include "sonar_array_decoder.h"
 
 namespace cogmap::hw::bag {
@@ -35,6 +37,8 @@ void open_bag(rosbag::Bag& bag, const std::string& path) {
         "not a readable ROS 1 bag: it has no index (its recording was not closed: rosbag record "
         "killed, or a .bag.active file); rebuild the index with ROS's `rosbag reindex` and "
         "replay the result");
+  } catch (const std::bad_alloc&) {
+    throw;  // the child process names it (bag_isolation.cc)
   } catch (const std::exception& e) {
     throw BagReadError(std::string("not a readable ROS 1 bag: ") + e.what());
   }
@@ -114,10 +118,11 @@ SonarMessage from_cloud2(const sensor_msgs::PointCloud2& c, std::size_t max_tran
   if (c.height > 1 && c.row_step != static_cast<std::uint64_t>(c.width) * c.point_step) {
     throw BagReadError("PointCloud2 rows with padding are not supported");
   }
-  if (n * c.point_step > c.data.size()) {
-    throw BagReadError("PointCloud2 of " + std::to_string(n) + " points needs " +
-                       std::to_string(n * c.point_step) + " bytes, has " +
-                       std::to_string(c.data.size()));
+  // Divided, not multiplied: width x height x point_step can pass 2^64 (point_step >= 4 here).
+  if (n > c.data.size() / c.point_step) {
+    throw BagReadError("PointCloud2 of " + std::to_string(n) + " points of " +
+                       std::to_string(c.point_step) + " bytes has " +
+                       std::to_string(c.data.size()) + " bytes of data");
   }
   check_transducers(n, max_transducers);
   SonarMessage out;
@@ -130,21 +135,32 @@ SonarMessage from_cloud2(const sensor_msgs::PointCloud2& c, std::size_t max_tran
   return out;
 }
 
+// What rosbag's MessageInstance::instantiate does (the same MD5 test, the same bytes, the same
+// deserialization), with the message's lengths checked before roscpp_serialization resizes
+// its vectors to them (message_layout.h).
 template <typename T>
-boost::shared_ptr<T> instantiate(const rosbag::MessageInstance& m) {
-  boost::shared_ptr<T> msg = m.instantiate<T>();
-  if (!msg) {
+boost::shared_ptr<T> instantiate(const rosbag::MessageInstance& m, MessageLayout layout) {
+  if (!m.isType<T>()) {
     throw BagReadError("is " + m.getDataType() + " (MD5 " + m.getMD5Sum() + "), expected " +
                        ros::message_traits::DataType<T>::value() + " (MD5 " +
                        ros::message_traits::MD5Sum<T>::value() + ")");
   }
+  // The record's data: the index check found it within its chunk (at most 256 MiB).
+  std::vector<std::uint8_t> bytes(m.size());
+  const auto size = static_cast<std::uint32_t>(bytes.size());
+  ros::serialization::OStream out(bytes.data(), size);
+  m.write(out);
+  check_message_layout(layout, bytes.data(), bytes.size());
+  auto msg = boost::make_shared<T>();
+  ros::serialization::IStream in(bytes.data(), size);
+  ros::serialization::deserialize(in, *msg);
   return msg;
 }
 
 SonarMessage read_sonar(const rosbag::MessageInstance& m, const StreamRequest& request) {
   switch (request.sonar) {
     case SonarEncoding::kPointCloud: {
-      const auto cloud = instantiate<sensor_msgs::PointCloud>(m);
+      const auto cloud = instantiate<sensor_msgs::PointCloud>(m, MessageLayout::kPointCloud);
       check_transducers(cloud->points.size(), request.max_transducers);
       SonarMessage out;
       out.stamp_s = cloud->header.stamp.toSec();
@@ -155,7 +171,8 @@ SonarMessage read_sonar(const rosbag::MessageInstance& m, const StreamRequest& r
       return out;
     }
     case SonarEncoding::kPointCloud2:
-      return from_cloud2(*instantiate<sensor_msgs::PointCloud2>(m), request.max_transducers);
+      return from_cloud2(*instantiate<sensor_msgs::PointCloud2>(m, MessageLayout::kPointCloud2),
+                         request.max_transducers);
     case SonarEncoding::kSonarArray: {
       if (m.getDataType() != kSonarArrayType) {
         throw BagReadError("is " + m.getDataType() + ", expected " + kSonarArrayType);
@@ -188,7 +205,7 @@ PoseMessage pose_of(double stamp_s, double x, double y, const geometry_msgs::Qua
 
 // True when the message held the odom -> base_link pair.
 bool read_tf(const rosbag::MessageInstance& m, std::size_t index, Streams& out) {
-  const auto tf = instantiate<tf2_msgs::TFMessage>(m);
+  const auto tf = instantiate<tf2_msgs::TFMessage>(m, MessageLayout::kTfMessage);
   ++out.tf_messages;
   bool found = false;
   for (const auto& t : tf->transforms) {
@@ -260,6 +277,8 @@ std::vector<TopicInfo> list_topics(const std::string& path) {
     return out;
   } catch (const BagReadError&) {
     throw;
+  } catch (const std::bad_alloc&) {
+    throw;
   } catch (const std::exception& e) {
     throw BagReadError(std::string("cannot read the bag's index: ") + e.what());
   }
@@ -292,7 +311,7 @@ Streams read_streams(const std::string& path, const StreamRequest& request,
           if (read_tf(m, index, out)) odometry_publisher.check(m.getCallerId());
         } else {
           odometry_publisher.check(m.getCallerId());
-          const auto odom = instantiate<nav_msgs::Odometry>(m);
+          const auto odom = instantiate<nav_msgs::Odometry>(m, MessageLayout::kOdometry);
           const auto& pose = odom->pose.pose;
           PoseMessage p = pose_of(odom->header.stamp.toSec(), pose.position.x, pose.position.y,
                                   pose.orientation);
@@ -301,6 +320,8 @@ Streams read_streams(const std::string& path, const StreamRequest& request,
         }
       }
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // the child process names it, with the message it was reading (bag_isolation.cc)
   } catch (const std::exception& e) {
     // Decoding errors and chunk read errors alike: the last message reached names the place.
     throw BagReadError(at(topic, index) + e.what());
