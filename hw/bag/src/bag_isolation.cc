@@ -92,6 +92,7 @@ class In {
  private:
   void take(void* dst, std::size_t n) {
     if (n > bytes_.size() - pos_) throw std::runtime_error("bag reader: short reply from child");
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy must not get
     std::memcpy(dst, bytes_.data() + pos_, n);
     pos_ += n;
   }
