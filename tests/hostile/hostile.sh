@@ -36,7 +36,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty
   run_out_dangling_link experiment_quoted_number set_int_hex_overflow set_value_not_utf8
   world_check_start_outside run_start_outside bag_undeclared_connection bag_cloud_points_2g
-  bag_cloud2_data_1g5)
+  bag_cloud2_data_1g5 log_player_v1 log_carmen_sonar_only)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -318,6 +318,16 @@ setup() {
       good_log >"$d/l.log"
       cmd=("$cogmap" replay "$d/l.log" --format carmen --out "$d/run"); want_rc=2
       want_text="l.log: no ODOM or SONAR lines: not a CARMEN log" ;;
+    log_player_v1)  # Player 1.x: "expected time host robot interface index type subtype"
+      printf '## Player version 1.6.5 \n## File version 0.1.0 \n1100000000.000 myhost 6665 position 00 1100000000.000 +00.000 +00.000 +0.000 +00.000 +00.000 +0.000 0\n' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:2: a Player 1.x log (file version 0.1.0): cogmap reads the files of Player 2.x and 3.x's writelog"
+      check() { [[ ! -e $d/run ]]; } ;;
+    log_carmen_sonar_only)  # CARMEN's SONAR has no robot pose; was "expected SONAR ... at field 12"
+      printf 'SONAR 0.261799 2 1.50 2.25 0.147 0.136 1.570796 0.193 0.119 0.872665 1100000000.050000 p2at 0.05\n' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log: no ODOM line before its 1 SONAR lines: a CARMEN SONAR line has no robot pose"
+      check() { [[ ! -e $d/run ]]; } ;;
     log_dev_zero)
       cmd=("$cogmap" replay /dev/zero --format cogmap --out "$d/run"); want_rc=2
       want_text="/dev/zero: not a regular file" ;;

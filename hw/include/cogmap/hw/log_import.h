@@ -1,7 +1,7 @@
 #pragma once
 /// Importers of foreign robot logs into cogmap frames (docs/robot-driver.md "Importers"):
-/// CARMEN text logs (ODOM and SONAR lines) and Player 2.x writelog files (position2d and sonar
-/// lines). Each becomes a list of SensorFrames plus the geometry (from the log where it says,
+/// CARMEN text logs (ODOM and SONAR lines) and Player 2.x/3.x writelog files (position2d and
+/// sonar lines). Each becomes a list of SensorFrames plus the geometry (from the log where it says,
 /// else the P2-AT's).
 
 #include <cstddef>
@@ -18,23 +18,29 @@ namespace cogmap::hw {
 /// A foreign log converted to the seam's vocabulary.
 struct ImportedLog {
   mapper::RobotGeometry geometry;
-  std::vector<mapper::SensorFrame> frames;  ///< in file order, time_s from the first message
-  std::size_t ignored_lines = 0;            ///< other message types (laser, params, ...)
+  std::vector<mapper::SensorFrame> frames;  ///< in file order; time_s from the first time used
+  std::size_t ignored_lines = 0;  ///< other messages, devices, robots; SONAR lines without a pose
 };
 
 /// Reads a CARMEN log. Lines read: `ODOM x y theta tv rv accel timestamp host logger_ts` (one
-/// frame without readings each) and `SONAR cone_angle n range*n (x y theta)*n robot_x robot_y
-/// robot_theta [tv rv] timestamp host logger_ts` (one frame with n readings; the first such
-/// line sets the sonar mounts and beam width). Other message types are counted and skipped.
-/// Throws LogError ("file:line: expected ...") for a malformed ODOM or SONAR line.
+/// frame without readings each) and `SONAR cone_angle n range*n (x y theta)*n timestamp host
+/// logger_ts` as CARMEN's logger writes it (one frame with n readings at the latest ODOM's pose;
+/// skipped before the first ODOM or when that is more than 0.5 s old), or with `robot_x robot_y
+/// robot_theta [tv rv]` before the timestamp (the line's own pose). The first SONAR line sets the
+/// sonar mounts and beam width. Other message types are counted and skipped. Times are decimal
+/// differences from the first frame's timestamp. Throws LogError ("file:line: expected ...")
+/// for a malformed ODOM or SONAR line.
 ImportedLog import_carmen_log(const std::filesystem::path& path);
 
-/// Reads a Player 2.x writelog file: `time host robot interface index type subtype data...`.
+/// Reads a Player 2.x/3.x writelog file: `time host robot interface index type subtype data...`.
 /// Lines read: position2d type 1 subtype 1 (`px py pa vx vy va stall`), sonar type 1 subtype 1
 /// (`count range*count`), and sonar geometry, type 1 subtype 2 or type 4 subtype 1
-/// (`count (x y yaw)*count`). A frame is emitted for every sonar ranges line, with the latest
-/// position; position lines before the first sonar line or between two sonar lines make
-/// frames without readings. Throws LogError for a malformed line of those types.
+/// (`count (x y yaw)*count`). The odometry is the position2d device of lowest address; the
+/// sonar arrays are that robot's, joined in index order when several have a geometry. A frame
+/// is emitted for every sonar ranges line, with the latest position; position lines before
+/// the first sonar line or between two sonar lines make frames without readings. Lines of
+/// other devices are counted and skipped. Throws LogError for a malformed line of those types,
+/// an array whose geometry changes, and Player 1.x files.
 ImportedLog import_player_log(const std::filesystem::path& path);
 
 /// Which format a file holds, from its first meaningful line.
