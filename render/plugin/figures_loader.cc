@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "cogmap/plugins/open_plugin.h"
 #include "cogmap/render/figures.h"
 #include "cogmap/render/renderer.h"
 #include "figure_api.h"
@@ -25,11 +26,11 @@ const FigureApi* load_plugin() {
       "COGMAP_PLUGIN_DIR to the folder that holds it, or run without figures (--no-figures)";
   // RTLD_LOCAL: the plugin's OSMesa, LLVM and its own copy of the drawing code stay out of the
   // program's symbol lookup. The handle is kept for the life of the process.
-  void* handle = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  std::string why;
+  void* handle = plugins::open_plugin(file, RTLD_NOW | RTLD_LOCAL, why);
   if (handle == nullptr) {
-    const char* why = ::dlerror();
-    throw RendererUnavailable("cannot load the figure renderer " + file + " (" +
-                              (why != nullptr ? why : "unknown reason") + ")" + advice);
+    throw RendererUnavailable("cannot load the figure renderer " + file + " (" + why + ")" +
+                              advice);
   }
   using Entry = const FigureApi* (*)();
   const auto entry = reinterpret_cast<Entry>(::dlsym(handle, plugin::kEntryPoint));
