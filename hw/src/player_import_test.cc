@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cogmap/hw/log_import.h"
-#include "cogmap/test_support/scratch_dir.h"
+#include "import_test_files.h"
 
 namespace cogmap::hw {
 namespace {
@@ -16,21 +16,11 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_log(const std::string& name, const std::string& text) {
-  const fs::path dir = test_support::process_scratch() / "player_import_test" /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::create_directories(dir);
-  std::ofstream(dir / name, std::ios::binary) << text;
-  return dir / name;
+  return testing::write_log("player_import_test", name, text);
 }
 
 std::string error_of(const fs::path& p) {
-  try {
-    (void)import_player_log(p);
-  } catch (const LogError& e) {
-    const std::string what = e.what();
-    return what.substr(what.find(p.filename().string()));
-  }
-  return "";
+  return testing::import_error([](const fs::path& f) { return import_player_log(f); }, p);
 }
 
 // WriteLog::OpenFile (Player 2.1): note the spaces before the newlines.

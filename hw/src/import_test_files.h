@@ -1,0 +1,39 @@
+#pragma once
+/// Test support for the log importers' tests: a log file written into the test's own scratch
+/// folder, and the error an import of it ends in.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cogmap/hw/log_import.h"
+#include "cogmap/test_support/scratch_dir.h"
+
+namespace cogmap::hw::testing {
+
+/// Writes `text` byte for byte to <scratch>/<suite>/<current test>/<name> and returns its path.
+inline std::filesystem::path write_log(const std::string& suite, const std::string& name,
+                                       const std::string& text) {
+  const std::filesystem::path dir = test_support::process_scratch() / suite /
+                                    ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name, std::ios::binary) << text;
+  return dir / name;
+}
+
+/// The message `import` (an importer taking the path) throws, from the file's name on (the
+/// folder before it differs from run to run); "" when it imports.
+template <class Import>
+std::string import_error(Import import, const std::filesystem::path& p) {
+  try {
+    (void)import(p);
+  } catch (const LogError& e) {
+    const std::string what = e.what();
+    return what.substr(what.find(p.filename().string()));
+  }
+  return "";
+}
+
+}  // namespace cogmap::hw::testing
