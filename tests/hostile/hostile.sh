@@ -101,59 +101,8 @@ PY
   for _ in $(seq 50); do [[ -s $1 ]] && break; sleep 0.1; done
 }
 
-# A ROS bag (stdout) whose sonar message's own bytes carry a damaged array length (ARG): "cloud",
-# a sensor_msgs/PointCloud whose points claim 2^31 - 1 elements (24 GiB), or "cloud2", a
-# PointCloud2 of one point whose data claims 1.5e9 bytes; its odometry message is intact.
-damaged_sonar_bag() {
-  python3 - "$1" <<'PY'
-import struct, sys
-u32, u64 = (lambda v: struct.pack("<I", v)), (lambda v: struct.pack("<Q", v))
-def fields(fs):
-    return b"".join(u32(len(k) + 1 + len(v)) + k.encode() + b"=" + v for k, v in fs)
-def record(header, data):
-    h = fields(header)
-    return u32(len(h)) + h + u32(len(data)) + data
-def string(s): return u32(len(s)) + s
-def header(sec): return u32(0) + u32(sec) + u32(0) + string(b"")
-def conn(c, topic, type_, md5):
-    return record([("op", b"\x07"), ("conn", u32(c)), ("topic", topic)],
-                  fields([("topic", topic), ("type", type_), ("md5sum", md5),
-                          ("message_definition", b"")]))
-def message(c, sec, data):
-    return record([("op", b"\x02"), ("conn", u32(c)), ("time", u32(sec) + u32(0))], data)
-def bag_header(index_pos):
-    h = fields([("op", b"\x03"), ("index_pos", u64(index_pos)), ("conn_count", u32(2)),
-                ("chunk_count", u32(1))])
-    return u32(len(h)) + h + u32(4096 - len(h)) + b" " * (4096 - len(h))
-if sys.argv[1] == "cloud":
-    sonar = (b"sensor_msgs/PointCloud", b"d8e9c3f5afbdd8a130fd1d2763945fca",
-             header(100) + u32(0x7fffffff) + u32(0))
-else:
-    field = lambda n, off: string(n) + u32(off) + b"\x07" + u32(1)
-    sonar = (b"sensor_msgs/PointCloud2", b"1158d486dd51d683ce2f1be655c3c181",
-             header(100) + u32(1) + u32(1) + u32(2) + field(b"x", 0) + field(b"y", 4) + b"\x00" +
-             u32(8) + u32(8) + u32(1500000000) + bytes(8) + b"\x00")
-odometry = header(101) + string(b"base_link") + struct.pack("<7d", 0, 0, 0, 0, 0, 0, 1) + \
-    bytes(78 * 8)
-conns = [conn(0, b"/RosAria/pose", b"nav_msgs/Odometry", b"cd5e73d190d741a2f92e81eda573aca7"),
-         conn(1, b"/RosAria/sonar", sonar[0], sonar[1])]
-data = conns[0] + conns[1]
-offsets = [0, len(data)]
-data += message(1, 100, sonar[2])
-offsets[0] = len(data)
-data += message(0, 101, odometry)
-chunk = record([("op", b"\x05"), ("compression", b"none"), ("size", u32(len(data)))], data)
-index = b"".join(record([("op", b"\x04"), ("ver", u32(1)), ("conn", u32(c)), ("count", u32(1))],
-                        u32(101 - c) + u32(0) + u32(offsets[c])) for c in (0, 1))
-magic = b"#ROSBAG V2.0\n"
-chunk_pos = len(magic) + len(bag_header(0))
-info = record([("op", b"\x06"), ("ver", u32(1)), ("chunk_pos", u64(chunk_pos)),
-               ("start_time", u32(100) + u32(0)), ("end_time", u32(101) + u32(0)),
-               ("count", u32(2))], u32(0) + u32(1) + u32(1) + u32(1))
-sys.stdout.buffer.write(magic + bag_header(chunk_pos + len(chunk) + len(index)) + chunk + index +
-                        conns[0] + conns[1] + info)
-PY
-}
+# Hand-made one-chunk ROS bags (stdout): tiny_bag.py cloud | cloud2 | undeclared says which.
+tiny_bag() { python3 "$src/tests/hostile/tiny_bag.py" "$1"; }
 
 # Sets: cmd (array), want_rc, want_text, limit_s; may define check() for extra assertions.
 setup() {
@@ -655,40 +604,7 @@ PY
       [[ -e $(dirname "$cogmap")/../lib/cogmap/libcogmap_ros_bag_plugin.so ]] ||
         { echo "SKIP: built without the ROS bag reader"; exit 77; }
       command -v python3 >/dev/null || { echo "SKIP: no python3"; exit 77; }
-      python3 - >"$d/b.bag" <<'PY'
-import struct, sys
-u32, u64 = (lambda v: struct.pack("<I", v)), (lambda v: struct.pack("<Q", v))
-def fields(fs):
-    return b"".join(u32(len(k) + 1 + len(v)) + k.encode() + b"=" + v for k, v in fs)
-def record(header, data):
-    h = fields(header)
-    return u32(len(h)) + h + u32(len(data)) + data
-def conn(c, topic, type_):
-    return record([("op", b"\x07"), ("conn", u32(c)), ("topic", topic)],
-                  fields([("topic", topic), ("type", type_), ("md5sum", b"0" * 32),
-                          ("message_definition", b"")]))
-def message(c):
-    return record([("op", b"\x02"), ("conn", u32(c)), ("time", u32(100) + u32(0))], bytes(8))
-def bag_header(index_pos):  # padded to 4096 bytes, as rosbag writes it
-    h = fields([("op", b"\x03"), ("index_pos", u64(index_pos)), ("conn_count", u32(1)),
-                ("chunk_count", u32(1))])
-    return u32(len(h)) + h + u32(4096 - len(h)) + b" " * (4096 - len(h))
-# One chunk: the odometry's connection record, one message of connection 0 and one of 1.
-data = conn(0, b"/RosAria/pose", b"nav_msgs/Odometry")
-offsets = [len(data), len(data) + len(message(0))]
-data += message(0) + message(1)
-chunk = record([("op", b"\x05"), ("compression", b"none"), ("size", u32(len(data)))], data)
-index = b"".join(record([("op", b"\x04"), ("ver", u32(1)), ("conn", u32(c)), ("count", u32(1))],
-                        u32(100) + u32(0) + u32(offsets[c])) for c in (0, 1))
-magic = b"#ROSBAG V2.0\n"
-chunk_pos = len(magic) + len(bag_header(0))
-info = record([("op", b"\x06"), ("ver", u32(1)), ("chunk_pos", u64(chunk_pos)),
-               ("start_time", u32(100) + u32(0)), ("end_time", u32(100) + u32(0)),
-               ("count", u32(2))], u32(0) + u32(1) + u32(1) + u32(1))
-# The index declares connection 0 only; its chunk info counts a message of 1 as well.
-sys.stdout.buffer.write(magic + bag_header(chunk_pos + len(chunk) + len(index)) + chunk + index +
-                        conn(0, b"/RosAria/pose", b"nav_msgs/Odometry") + info)
-PY
+      tiny_bag undeclared >"$d/b.bag"
       cmd=("$cogmap" replay "$d/b.bag" --robot p3dx --out "$d/run"); want_rc=2
       want_text="b.bag: the chunk info record at byte 4742 names connection 1 (1 message in the chunk at byte 4117), but no connection record declares connection 1 (the index declares 0 /RosAria/pose): the bag's index is damaged"
       check() { [[ ! -e $d/run ]]; } ;;
@@ -697,10 +613,10 @@ PY
         { echo "SKIP: built without the ROS bag reader"; exit 77; }
       command -v python3 >/dev/null || { echo "SKIP: no python3"; exit 77; }
       if [[ $what == bag_cloud_points_2g ]]; then
-        damaged_sonar_bag cloud >"$d/b.bag"
+        tiny_bag cloud >"$d/b.bag"
         want_text="b.bag: topic /RosAria/sonar, message 0: its points array claims 2147483647 elements (25769803764 bytes) but the message holds only 4 more bytes: the message is damaged"
       else
-        damaged_sonar_bag cloud2 >"$d/b.bag"
+        tiny_bag cloud2 >"$d/b.bag"
         want_text="b.bag: topic /RosAria/sonar, message 0: its data array claims 1500000000 elements (1500000000 bytes) but the message holds only 9 more bytes: the message is damaged"
       fi
       cmd=("$cogmap" replay "$d/b.bag" --robot p3dx --out "$d/run"); want_rc=2; limit_s=3
