@@ -361,6 +361,41 @@ TEST(ExperimentConfig, OverrideErrorsAboveTheOverriddenKeyNameTheOverride) {
             p.string() + ": nonsense: expected key=value (from --set nonsense)");
 }
 
+// Every boolean key takes YAML 1.2's booleans only, in the file, in the robot block and from
+// --set (yaml-cpp took `figures: no`, `multipath: On` and `--set mapper.relax=off`), and a
+// block scalar where a number is expected is named as one.
+TEST(ExperimentConfig, BooleanKeysTakeTrueOrFalseOnly) {
+  const std::string yaml11 = ": a YAML 1.1 boolean, which YAML 1.2 reads as a string (write ";
+  const fs::path out =
+      write_temp("figures_no.yaml", "name: b\nworld: w.yaml\noutput:\n  figures: no\n");
+  EXPECT_EQ(error_of(out), out.string() + ":4: output.figures: expected true or false, got 'no'" +
+                               yaml11 + "false)");
+  const fs::path sonar =
+      write_temp("multipath_on.yaml", "name: b\nworld: w.yaml\nrobot:\n  sonar: {multipath: On}\n");
+  EXPECT_EQ(error_of(sonar), sonar.string() +
+                                 ":4: robot.sonar.multipath: expected true or false, got 'On'" +
+                                 yaml11 + "true)");
+  const fs::path p = write_temp("good_bools.yaml", kGood);
+  EXPECT_EQ(error_of(p, {"mapper.relax=off"}),
+            p.string() + ":13: mapper.relax: expected true or false, got 'off'" + yaml11 +
+                "false) (from --set mapper.relax=off)");
+  EXPECT_EQ(error_of(p, {"controller.door_search=Y"}),
+            p.string() + ":9: controller.door_search: expected true or false, got 'Y'" + yaml11 +
+                "true) (from --set controller.door_search=Y)");
+  EXPECT_EQ(error_of(p, {"output.nav_trace='true'"}),
+            p.string() +
+                ":23: output.nav_trace: expected true or false, got the quoted string 'true' "
+                "(write it without quotes) (from --set output.nav_trace='true')");
+  EXPECT_TRUE(load_experiment(p, {"mapper.translation_moves_estimate=TRUE"})
+                  .mapper.translation.moves_estimate);
+  const fs::path block = write_temp("block.yaml",
+                                    "name: b\nworld: w.yaml\nduration_s: |\n  2\noutput:\n  "
+                                    "figures: >-\n    false\n");
+  EXPECT_EQ(error_of(block), block.string() +
+                                 ":3: duration_s: expected a number, got a block scalar (| or "
+                                 ">) holding '2', a string in YAML (write the plain 2 instead)");
+}
+
 TEST(ExperimentConfig, MissingFileIsAConfigError) {
   EXPECT_NE(error_of("/nonexistent/x.yaml").find("cannot open file"), std::string::npos);
 }

@@ -1,8 +1,10 @@
 #include "cogmap/experiments/sweep.h"
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 #include <stdexcept>
+#include <string_view>
 
 #include "cogmap/experiments/run_directory.h"
 
@@ -11,12 +13,85 @@
 namespace cogmap::experiments {
 namespace {
 
-// Flow-style YAML of a value, so lists survive as "[1, 2]" and strings stay bare.
+// A value as results.csv and the run directory show it: a scalar's text as it is ("007",
+// "x y"), anything else as flow YAML ("[1, 2]").
 std::string flow_text(const YAML::Node& node) {
   if (node.IsScalar()) return node.Scalar();
   YAML::Emitter out;
   out << YAML::Flow << node;
   return out.c_str();
+}
+
+// A string as a YAML double-quoted scalar: every byte as it is but '"', '\\' and control
+// characters, which are escaped (a byte that is not UTF-8 stays, for --set's check to name).
+std::string double_quoted(std::string_view text) {
+  std::string out = "\"";
+  for (const char ch : text) {
+    const auto b = static_cast<unsigned char>(ch);
+    if (ch == '"' || ch == '\\') {
+      out += {'\\', ch};
+    } else if (ch == '\n') {
+      out += "\\n";
+    } else if (b < 0x20 || b == 0x7F) {
+      constexpr char kHex[] = "0123456789abcdef";
+      out += {'\\', 'x', kHex[b >> 4], kHex[b & 0xF]};
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
+}
+
+// A block scalar's text as a literal block scalar that reads back as exactly that text: an
+// explicit indentation (its first line may start with spaces) and the chomping its final line
+// breaks need (- none, clip one, + several or a text of line breaks alone).
+std::string literal_block(std::string_view text) {
+  std::size_t breaks = 0;
+  while (breaks < text.size() && text[text.size() - 1 - breaks] == '\n') ++breaks;
+  const std::string_view body = text.substr(0, text.size() - breaks);
+  const char* chomp = breaks == 0 ? "-" : breaks == 1 && !body.empty() ? "" : "+";
+  std::string out = std::string("|2") + chomp + "\n";
+  std::size_t start = 0;
+  while (!body.empty() && start <= body.size()) {
+    const std::size_t end = std::min(body.find('\n', start), body.size());
+    const std::string_view line = body.substr(start, end - start);
+    out += line.empty() ? "\n" : "  " + std::string(line) + "\n";
+    start = end + 1;
+  }
+  for (std::size_t k = body.empty() ? 0 : 1; k < breaks; ++k) out += "\n";
+  return out;
+}
+
+// The --set text of a value: YAML that reads back as the sweep file wrote it. yaml-cpp's
+// emitter writes a quoted scalar plain ('007' became 007, '0.5' a number, 'a: b' a mapping,
+// '#x' nothing): a plain scalar stays plain (so 55 and true keep their types), a quoted one is
+// double-quoted, a block scalar (| or >) a literal block (the message for it stays its own),
+// tags stay; inside a list or mapping (flow YAML) a plain scalar that flow YAML would split is
+// quoted, a string either way, and a block scalar is quoted.
+std::string set_text(const YAML::Node& node, bool top) {
+  const std::string& tag = node.Tag();
+  const std::string prefix =
+      tag.empty() || tag == "?" || tag == "!" ? "" : "!<" + tag + "> ";  // verbatim
+  if (node.IsSequence() || node.IsMap()) {
+    std::string out = node.IsMap() ? "{" : "[";
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      if (it != node.begin()) out += ", ";
+      out += node.IsMap() ? set_text(it->first, false) + ": " + set_text(it->second, false)
+                          : set_text(*it, false);
+    }
+    return prefix + out + (node.IsMap() ? "}" : "]");
+  }
+  if (!node.IsScalar()) return prefix + "~";
+  const std::string& text = node.Scalar();
+  if (tag == "!") {
+    const bool block = node.Style() == YAML::EmitterStyle::Block;
+    return block && top ? literal_block(text) : double_quoted(text);
+  }
+  // Plain: as written, where it cannot read back as anything else.
+  const bool risky = text.empty() || text.find('\n') != std::string::npos ||
+                     text.starts_with("---") || text.starts_with("...") ||
+                     (!top && text.find_first_of(",[]{}:#") != std::string::npos);
+  return prefix + (risky ? double_quoted(text) : text);
 }
 
 std::size_t parse_count(const std::string& text, const std::string& whole) {
@@ -40,7 +115,9 @@ std::string SweepRun::dir_name() const {
 
 std::vector<std::string> SweepRun::overrides() const {
   std::vector<std::string> out;
-  for (const auto& [key, value] : values) out.push_back(key + "=" + value);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    out.push_back(values[i].first + "=" + (set_texts.empty() ? values[i].second : set_texts[i]));
+  }
   return out;
 }
 
@@ -84,9 +161,9 @@ SweepSpec load_sweep(const std::filesystem::path& path, const SweepLimits& limit
       values.expect_sequence();
       if (values.size() == 0) values.fail("needs at least one value");
       if (key == "seed") values.fail("vary the seed with 'seeds', not under 'vary'");
-      SweepAxis axis{key, {}};
-      // Two values with the same run directory name are the same run (55 and "55"), or two
-      // runs writing one directory ("a b" and "a_b"): both are refused.
+      SweepAxis axis{key, {}, {}};
+      // Two values with the same run directory name would be two runs writing one directory
+      // (55 and "55", "a b" and "a_b"): refused.
       std::map<std::string, std::pair<std::string, int>> by_dir;
       for (std::size_t i = 0; i < values.size(); ++i) {
         const yaml::Node v = values.at(i);
@@ -98,6 +175,7 @@ SweepSpec load_sweep(const std::filesystem::path& path, const SweepLimits& limit
                  std::to_string(it->second.second) + "): same run directory name");
         }
         axis.values.push_back(text);
+        axis.set_texts.push_back(set_text(v.raw(), true));
       }
       count(axis.values.size(), values);
       spec.vary.push_back(std::move(axis));
@@ -114,16 +192,20 @@ std::vector<SweepRun> expand_sweep(const SweepSpec& spec) {
   for (std::size_t c = 0; c < combos; ++c) {
     // Mixed-radix digits of c, last axis fastest.
     std::vector<std::pair<std::string, std::string>> values(spec.vary.size());
+    std::vector<std::string> set_texts(spec.vary.size());
     std::size_t rest = c;
     for (std::size_t a = spec.vary.size(); a-- > 0;) {
       const auto& axis = spec.vary[a];
-      values[a] = {axis.key, axis.values[rest % axis.values.size()]};
+      const std::size_t i = rest % axis.values.size();
+      values[a] = {axis.key, axis.values[i]};
+      set_texts[a] = i < axis.set_texts.size() ? axis.set_texts[i] : axis.values[i];
       rest /= axis.values.size();
     }
     for (const std::uint64_t seed : spec.seeds) {
       SweepRun run;
       run.index = runs.size();
       run.values = values;
+      run.set_texts = set_texts;
       run.seed = seed;
       runs.push_back(std::move(run));
     }

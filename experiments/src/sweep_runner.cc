@@ -87,12 +87,12 @@ int sweep_line(const fs::path& file, const std::string& key, int value_index) {
   return 0;
 }
 
-// The message without the " (from --set key=value)" load_experiment adds: in a sweep, the
-// override is the sweep's `vary` entry, which the new location names.
-std::string without_set_suffix(const std::string& message, const std::string& key,
-                               const std::string& value) {
-  const std::string suffix = " (from --set " + key + "=" + value + ")";
-  return message.ends_with(suffix) ? message.substr(0, message.size() - suffix.size()) : message;
+// The message without the " (from --set key=...)" load_experiment adds: in a sweep, the
+// override is the sweep's `vary` entry, which the new location names. Found by its start: the
+// value is shown escaped (a block scalar's --set text holds line breaks).
+std::string without_set_suffix(const std::string& message, const std::string& key) {
+  const std::size_t at = message.rfind(" (from --set " + key + "=");
+  return at != std::string::npos && message.ends_with(")") ? message.substr(0, at) : message;
 }
 
 // Re-raises an error loading or validating one run. An error the run's `vary` values caused is
@@ -111,7 +111,7 @@ std::string without_set_suffix(const std::string& message, const std::string& ke
       const int index = blames_key(e, key) || at == axis->values.end()
                             ? -1
                             : static_cast<int>(at - axis->values.begin());
-      std::string message = without_set_suffix(bare_message(e), key, value);
+      std::string message = without_set_suffix(bare_message(e), key);
       if (e.key() != key) message = e.key() + ": " + message;
       const std::string where =
           "vary." + key + (index < 0 ? "" : "[" + std::to_string(index) + "]");

@@ -186,6 +186,51 @@ TEST(SweepRunner, BadValueFailsBeforeAnythingRunsAtItsLineInTheSweep) {
       << nested;
 }
 
+// A vary value reaches the experiment as the sweep file wrote it: a quoted number or boolean
+// for such a key is refused at its line in the sweep, as in the experiment file, and a quoted
+// text stays that text. yaml-cpp's emitter dropped the quotes: '0.5' ran 0.5 s, 'false' was
+// the boolean, 'a: b' a mapping ("expected a string") and '#x' nothing ("must not be empty").
+TEST(SweepRunner, QuotedValuesStayStringsOnTheirWayToTheRun) {
+  Fixture f = make_fixture("quoted");
+  const std::string sweep = (f.dir / "bad.sweep.yaml").string();
+  const std::string in_base = " (base " + (f.dir / "base.yaml").string() + ", run ";
+  EXPECT_EQ(plan_error(f,
+                       "base: base.yaml\nseeds: [1]\nvary:\n  duration_s:\n    - 5\n    - "
+                       "'0.5'\n"),
+            sweep +
+                ":6: vary.duration_s[1]: expected a number, got the quoted string '0.5' (write it "
+                "without quotes)" +
+                in_base + "duration_s=0.5,seed=1)");
+  EXPECT_EQ(
+      plan_error(f, "base: base.yaml\nseeds: [1]\nvary:\n  output.figures: [true, 'false']\n"),
+      sweep +
+          ":4: vary.output.figures[1]: expected true or false, got the quoted string "
+          "'false' (write it without quotes)" +
+          in_base + "output.figures=false,seed=1)");
+  EXPECT_EQ(plan_error(f, "base: base.yaml\nseeds: [1]\nvary:\n  output.figures: [yes]\n"),
+            sweep +
+                ":4: vary.output.figures[0]: expected true or false, got 'yes': a YAML 1.1 "
+                "boolean, which YAML 1.2 reads as a string (write true)" +
+                in_base + "output.figures=yes,seed=1)");
+  EXPECT_EQ(plan_error(f, "base: base.yaml\nseeds: [1]\nvary:\n  duration_s:\n    - |\n      2\n"),
+            sweep +
+                ":5: vary.duration_s[0]: expected a number, got a block scalar (| or >) holding "
+                "'2', a string in YAML (write the plain 2 instead)" +
+                in_base + "duration_s=2_,seed=1)");
+  std::ofstream(f.dir / "names.sweep.yaml")
+      << "base: base.yaml\nseeds: [1]\nvary:\n  name: ['007', 'a: b', '#x', 'true', x y]\n"
+         "  duration_s: [0x10]\n";
+  SweepOptions o;
+  o.out_dir = f.dir / "out";
+  const auto planned = plan_sweep(load_sweep(f.dir / "names.sweep.yaml"), o);
+  ASSERT_EQ(planned.size(), 5u);
+  const std::vector<std::string> names = {"007", "a: b", "#x", "true", "x y"};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    EXPECT_EQ(planned[i].experiment.name, names[i]);
+    EXPECT_DOUBLE_EQ(planned[i].experiment.duration_s, 16.0);
+  }
+}
+
 // An unknown varied key was reported as "base.yaml: mapper.gridd: unknown key", at no line
 // of the sweep (or at line 1 of the base experiment).
 TEST(SweepRunner, UnknownVaryKeyIsReportedAtItsLineInTheSweep) {

@@ -121,7 +121,7 @@ TEST(Sweep, DuplicateSeedsAndValuesAreRefused) {
   EXPECT_NE(sweep_error("base: b.yaml\nseeds:\n  - 1\n  - 2\n  - 1\n")
                 .find(":5: seeds[2]: seed 1 is listed twice (also line 3)"),
             std::string::npos);
-  // 55 and "55" are the same --set value and the same run directory.
+  // 55 and "55" differ (a number and a string) but would write the same run directory.
   EXPECT_NE(sweep_error("base: b.yaml\nseeds: [1]\nvary:\n  mapper.cell_scale_mm: [55, \"55\"]\n")
                 .find(":4: vary.mapper.cell_scale_mm[1]: value '55' repeats '55' (line 4)"),
             std::string::npos);
@@ -129,6 +129,62 @@ TEST(Sweep, DuplicateSeedsAndValuesAreRefused) {
   EXPECT_NE(sweep_error("base: b.yaml\nseeds: [1]\nvary:\n  name: [\"a b\", a_b]\n")
                 .find("value 'a_b' repeats 'a b'"),
             std::string::npos);
+}
+
+// Each value's --set text reads back as the sweep file wrote it. yaml-cpp's emitter (and a
+// scalar's bare text) dropped the quotes: '007' went to --set as 007, '0.5' as the number,
+// 'false' as the boolean, 'a: b' as a mapping and '#x' as a comment.
+TEST(Sweep, SetTextsReadBackAsTheSweepWroteThem) {
+  const fs::path file = write_temp(
+      "q.sweep.yaml",
+      "base: b.yaml\nseeds: [1]\nvary:\n"
+      "  name: ['007', \"x y\", 'a: b', '#x', \"it's \\\"q\\\"\", plain words, !!str 12]\n"
+      "  duration_s: [55, '0.5', 0x10]\n"
+      "  output.figures: [true, 'false', yes]\n"
+      "  controller.waypoints: [[[1, '2']], [[3, 4]]]\n"
+      "  description:\n    - |\n      two\n      lines\n    - >-\n      folded\n      line\n"
+      "    - |2+\n         lead\n        x\n\n\n");
+  const SweepSpec s = load_sweep(file);
+  ASSERT_EQ(s.vary.size(), 5u);
+  EXPECT_EQ(s.vary[0].values, (std::vector<std::string>{"007", "x y", "a: b", "#x", "it's \"q\"",
+                                                        "plain words", "12"}));
+  EXPECT_EQ(
+      s.vary[0].set_texts,
+      (std::vector<std::string>{"\"007\"", "\"x y\"", "\"a: b\"", "\"#x\"", "\"it's \\\"q\\\"\"",
+                                "plain words", "!<tag:yaml.org,2002:str> 12"}));
+  EXPECT_EQ(s.vary[1].set_texts, (std::vector<std::string>{"55", "\"0.5\"", "0x10"}));
+  EXPECT_EQ(s.vary[2].set_texts, (std::vector<std::string>{"true", "\"false\"", "yes"}));
+  EXPECT_EQ(s.vary[3].set_texts, (std::vector<std::string>{"[[1, \"2\"]]", "[[3, 4]]"}));
+  EXPECT_EQ(s.vary[4].set_texts,
+            (std::vector<std::string>{"|2\n  two\n  lines\n", "|2-\n  folded line\n",
+                                      "|2+\n     lead\n    x\n\n\n"}));
+  // Set as --set sets them, every value is the node the sweep file holds: the same text, the
+  // same tag (quoted "!", plain "?") and, for | and >, still a block scalar.
+  const yaml::Node vary = yaml::Node::load_file(file)["vary"];
+  for (const SweepAxis& axis : s.vary) {
+    for (std::size_t i = 0; i < axis.values.size(); ++i) {
+      yaml::Node doc = yaml::Node::load_string("x: 0\n", "d.yaml");
+      yaml::apply_override(doc.raw(), "x=" + axis.set_texts[i]);
+      const YAML::Node want = vary[axis.key].at(i).raw();
+      const YAML::Node got = doc.raw()["x"];
+      const std::string at = axis.key + "[" + std::to_string(i) + "]";
+      if (!want.IsScalar()) {
+        EXPECT_EQ(YAML::Dump(got), YAML::Dump(want)) << at;
+        continue;
+      }
+      EXPECT_EQ(got.Scalar(), want.Scalar()) << at;
+      EXPECT_EQ(got.Tag(), want.Tag()) << at;
+      EXPECT_EQ(got.Style(), want.Style()) << at;
+    }
+  }
+  const auto runs = expand_sweep(s);
+  EXPECT_EQ(runs[0].overrides(),
+            (std::vector<std::string>{"name=\"007\"", "duration_s=55", "output.figures=true",
+                                      "controller.waypoints=[[1, \"2\"]]",
+                                      "description=|2\n  two\n  lines\n"}));
+  EXPECT_EQ(runs[0].dir_name(),
+            "name=007,duration_s=55,output.figures=true,controller.waypoints=__1,_2__,"
+            "description=two_lines_,seed=1");
 }
 
 TEST(Sweep, RunCountLimitIsCheckedBeforeExpansion) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -12,6 +11,8 @@
 
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
+
+#include "scalar_text.h"
 
 namespace cogmap::yaml {
 namespace {
@@ -64,9 +65,13 @@ int key_line_of(const YAML::Node& map, const std::string& key) {
 // Walks the whole tree once after parsing: yaml-cpp accepts keys that are lists or mappings
 // (which later crash any `as<std::string>()` on a key) and keeps only the first of two equal
 // keys, silently. Both are refused here, with their lines, and the tree's size is bounded.
+// Block scalars (| or >) get the style Block, which the emitter ignores for scalars: yaml-cpp
+// keeps no scalar style, and only the text `text` (what was parsed) tells them from quoted
+// ones, for the message where a number or boolean is expected (refuse_strings).
 class TreeCheck {
  public:
-  TreeCheck(const std::string& file, const LoadLimits& limits) : file_(file), limits_(limits) {}
+  TreeCheck(const std::string& file, const LoadLimits& limits, std::string_view text)
+      : file_(file), limits_(limits), text_(text) {}
 
   void visit(const YAML::Node& node, const std::string& path, std::size_t depth) {
     if (++nodes_ > limits_.max_nodes) {
@@ -96,12 +101,20 @@ class TreeCheck {
       for (std::size_t i = 0; i < node.size(); ++i) {
         visit(node[i], path + "[" + std::to_string(i) + "]", depth + 1);
       }
+    } else if (node.IsScalar() && node.Tag() == "!" && !node.Mark().is_null()) {
+      // A mark's position leaves out a UTF-8 byte order mark; the text holds it.
+      const std::size_t bom = text_.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+      if (detail::block_scalar_at(text_, static_cast<std::size_t>(node.Mark().pos) + bom)) {
+        YAML::Node handle = node;  // the same node: a handle, not a copy
+        handle.SetStyle(YAML::EmitterStyle::Block);
+      }
     }
   }
 
  private:
   const std::string& file_;
   const LoadLimits& limits_;
+  std::string_view text_;
   std::size_t nodes_ = 0;
 };
 
@@ -146,42 +159,14 @@ int second_document_line(const std::string& text) {
   return std::max(second.line, 1);
 }
 
-// An integer as YAML 1.2's core schema writes one: [-+]?[0-9]+ in decimal (a leading 0 is
-// still decimal: 017 is 17, as a double key always read it; yaml-cpp's int conversion took it
-// as octal 15), 0o[0-7]+ in octal or 0x[0-9a-fA-F]+ in hexadecimal (no sign; yaml-cpp read
-// hex for int keys only and never 0o). `fits`: the magnitude fits in 64 bits.
-struct CoreInteger {
-  bool negative = false;
-  std::uint64_t magnitude = 0;
-  bool fits = true;
-};
-
-std::optional<CoreInteger> core_integer(std::string_view s) {
-  CoreInteger out;
-  int base = 10;
-  if (s.starts_with("0x") || s.starts_with("0o")) {
-    base = s[1] == 'x' ? 16 : 8;
-    s.remove_prefix(2);
-  } else if (s.starts_with('-') || s.starts_with('+')) {
-    out.negative = s[0] == '-';
-    s.remove_prefix(1);
-  }
-  if (s.empty()) return std::nullopt;  // "0x", "-"
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out.magnitude, base);
-  if (end != s.data() + s.size()) return std::nullopt;  // "0xZZ", "1.5", "-0x10"
-  if (ec == std::errc::result_out_of_range) {
-    out.fits = false;
-  } else if (ec != std::errc()) {
-    return std::nullopt;
-  }
-  return out;
-}
-
 // Refuses a scalar YAML reads as a string whatever its text, where a number or a boolean is
 // expected: a quoted one ('2', "7"; yaml-cpp tags it "!", a plain scalar "?" and a node built
-// in code not at all) or one tagged !!str or a tag of its own. Quoted numbers used to be read
-// as numbers. `readable`: whether the text would have been accepted without the quotes.
-void refuse_strings(const Node& node, const std::string& expected, bool readable) {
+// in code not at all), a block scalar (| or >, tagged "!" as well; TreeCheck marks it) or one
+// tagged !!str or a tag of its own. Quoted numbers used to be read as numbers, and a block
+// scalar was called a quoted string, its line breaks in the message. `reads`: whether the text
+// written plain would be accepted, for the advice.
+void refuse_strings(const Node& node, const std::string& expected,
+                    bool (*reads)(std::string_view)) {
   const std::string& tag = node.raw().Tag();
   constexpr std::string_view kCore = "tag:yaml.org,2002:";
   if (tag.empty() || tag == "?" || (tag.starts_with(kCore) && !tag.ends_with(":str"))) return;
@@ -190,9 +175,20 @@ void refuse_strings(const Node& node, const std::string& expected, bool readable
     const std::string shown = tag.starts_with(kCore) ? "!!" + tag.substr(kCore.size()) : tag;
     node.fail("expected " + expected + ", got '" + text + "' tagged " + shown);
   }
+  if (node.raw().Style() == YAML::EmitterStyle::Block) {
+    // Its lines without the final line break(s) | and > add, each further break shown as \n.
+    std::string_view body = text;
+    while (body.ends_with('\n')) body.remove_suffix(1);
+    std::string shown;
+    for (const char ch : body) shown += ch == '\n' ? std::string("\\n") : std::string(1, ch);
+    const bool one_line = body.find('\n') == std::string_view::npos;
+    node.fail("expected " + expected + ", got a block scalar (| or >) holding '" + shown +
+              "', a string in YAML" +
+              (one_line && reads(body) ? " (write the plain " + shown + " instead)" : ""));
+  }
   if (text.empty()) node.fail("expected " + expected + ", got the empty string ''");
   node.fail("expected " + expected + ", got the quoted string '" + text + "'" +
-            (readable ? " (write it without quotes)" : ""));
+            (reads(text) ? " (write it without quotes)" : ""));
 }
 
 }  // namespace
@@ -293,7 +289,7 @@ Node Node::load_string(const std::string& text, const std::string& file, const L
                       "YAML syntax: " + syntax_message(e, limits));
   }
   if (!root.IsDefined() || root.IsNull()) throw ConfigError(file, 1, "", "the document is empty");
-  TreeCheck(file, limits).visit(root, "", 0);
+  TreeCheck(file, limits, text).visit(root, "", 0);
   return Node(root, file, "");
 }
 
@@ -373,12 +369,12 @@ template <>
 double Node::as<double>() const {
   if (!node_.IsScalar()) fail("expected a number");
   const std::string& text = node_.Scalar();
+  refuse_strings(*this, "a number", detail::reads_as_number);
   double v = 0.0;
-  std::optional<CoreInteger> n;  // 0x/0o: a core-schema integer, as an int key reads it
-  if (text.starts_with("0x") || text.starts_with("0o")) n = core_integer(text);
+  std::optional<detail::CoreInteger> n;  // 0x/0o: a core-schema integer, as an int key reads it
+  if (text.starts_with("0x") || text.starts_with("0o")) n = detail::core_integer(text);
   const bool ok = n ? n->fits : YAML::convert<double>::decode(node_, v) && std::isfinite(v);
   if (n) v = static_cast<double>(n->magnitude);
-  refuse_strings(*this, "a number", ok);
   if (n && !n->fits) {
     fail("expected a number, got '" + text +
          "': hexadecimal and octal numbers must fit in 64 bits");
@@ -391,8 +387,8 @@ template <>
 int Node::as<int>() const {
   if (!node_.IsScalar()) fail("expected an integer");
   const std::string& text = node_.Scalar();
-  const auto n = core_integer(text);
-  refuse_strings(*this, "an integer", n.has_value());
+  refuse_strings(*this, "an integer", detail::reads_as_integer);
+  const auto n = detail::core_integer(text);
   if (!n) fail("expected an integer, got '" + text + "'");
   using Limits = std::numeric_limits<int>;
   const std::uint64_t most = n->negative ? std::uint64_t{1} + Limits::max() : Limits::max();
@@ -408,8 +404,8 @@ template <>
 std::uint64_t Node::as<std::uint64_t>() const {
   if (!node_.IsScalar()) fail("expected a non-negative integer");
   const std::string& text = node_.Scalar();
-  const auto n = core_integer(text);
-  refuse_strings(*this, "a non-negative integer", n && !n->negative);
+  refuse_strings(*this, "a non-negative integer", detail::reads_as_count);
+  const auto n = detail::core_integer(text);
   if (!n || n->negative) fail("expected a non-negative integer, got '" + text + "'");
   if (!n->fits) {
     fail("expected a non-negative integer of at most " +
@@ -418,14 +414,20 @@ std::uint64_t Node::as<std::uint64_t>() const {
   return n->magnitude;
 }
 
+// YAML 1.2's core booleans only, as the numbers follow YAML 1.2: yaml-cpp's YAML 1.1 reading
+// took `yes`, `on`, `n`... too, so `--set output.figures=no` and `figures: off` said false.
 template <>
 bool Node::as<bool>() const {
   if (!node_.IsScalar()) fail("expected true or false");
-  bool v = false;
-  const bool ok = YAML::convert<bool>::decode(node_, v);
-  refuse_strings(*this, "true or false", ok);
-  if (!ok) fail("expected true or false, got '" + node_.Scalar() + "'");
-  return v;
+  const std::string& text = node_.Scalar();
+  refuse_strings(*this, "true or false", detail::reads_as_bool);
+  if (const auto v = detail::core_bool(text)) return *v;
+  if (const auto meant = detail::yaml11_only_bool(text)) {
+    fail("expected true or false, got '" + text +
+         "': a YAML 1.1 boolean, which YAML 1.2 reads as a string (write " +
+         (*meant ? "true" : "false") + ")");
+  }
+  fail("expected true or false, got '" + text + "'");
 }
 
 template <>
@@ -472,7 +474,7 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
                       "value is not valid YAML: " + syntax_message(e, LoadLimits{}));
   }
   try {
-    TreeCheck("--set", LoadLimits{}).visit(value, key, 0);
+    TreeCheck("--set", LoadLimits{}, value_text).visit(value, key, 0);
   } catch (const ConfigError& e) {
     throw ConfigError("--set", 0, key, "value is not valid: " + bare(e));
   }

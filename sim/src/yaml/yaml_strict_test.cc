@@ -277,6 +277,96 @@ TEST(YamlStrict, OverrideValuesFollowTheNumberRule) {
             std::string::npos);
 }
 
+// Booleans follow YAML 1.2's core schema, as the numbers do: yaml-cpp (YAML 1.1) also read
+// yes/no/on/off/y/n in three cases each, so `figures: no` and `--set relax=off` said false.
+TEST(YamlStrict, BooleansAreYaml12CoreOnly) {
+  const Node root = Node::load_string(
+      "a: true\nb: True\nc: TRUE\nd: false\ne: False\nf: FALSE\ng: yes\nh: No\ni: on\nj: OFF\n"
+      "k: y\nl: N\nm: tRUE\nn: 1\no: !!bool yes\np: \"True\"\n",
+      "b.yaml");
+  for (const char* key : {"a", "b", "c"}) EXPECT_TRUE(root.get<bool>(key)) << key;
+  for (const char* key : {"d", "e", "f"}) EXPECT_FALSE(root.get<bool>(key)) << key;
+  int line = 7;
+  for (const auto& [key, meant] : {std::pair{"g", "true"},
+                                   {"h", "false"},
+                                   {"i", "true"},
+                                   {"j", "false"},
+                                   {"k", "true"},
+                                   {"l", "false"}}) {
+    const std::string text = root[key].as<std::string>();
+    EXPECT_EQ(config_error_of([&] { root.get<bool>(key); }),
+              "b.yaml:" + std::to_string(line++) + ": " + key + ": expected true or false, got '" +
+                  text + "': a YAML 1.1 boolean, which YAML 1.2 reads as a string (write " + meant +
+                  ")");
+  }
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("m"); }),
+            "b.yaml:13: m: expected true or false, got 'tRUE'");
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("n"); }),
+            "b.yaml:14: n: expected true or false, got '1'");
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("o"); }),
+            "b.yaml:15: o: expected true or false, got 'yes': a YAML 1.1 boolean, which YAML 1.2 "
+            "reads as a string (write true)");
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("p"); }),
+            "b.yaml:16: p: expected true or false, got the quoted string 'True' (write it without "
+            "quotes)");
+}
+
+// A --set value is YAML text: the same booleans as a file's.
+TEST(YamlStrict, OverrideBooleansFollowTheSameRule) {
+  Node root = Node::load_string("name: e\nfigures: true\n", "e.yaml");
+  apply_override(root.raw(), "figures=off");
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("figures"); }),
+            "e.yaml:1: figures: expected true or false, got 'off': a YAML 1.1 boolean, which YAML "
+            "1.2 reads as a string (write false)");
+  apply_override(root.raw(), "figures='false'");
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("figures"); }),
+            "e.yaml:1: figures: expected true or false, got the quoted string 'false' (write it "
+            "without quotes)");
+  apply_override(root.raw(), "figures=False");
+  EXPECT_FALSE(root.get<bool>("figures"));
+}
+
+// A block scalar (| or >) is a string in YAML: it was refused as "the quoted string '2\n'",
+// its line break inside the message.
+TEST(YamlStrict, BlockScalarWhereANumberOrBooleanIsExpectedIsNamedAsSuch) {
+  const Node root = Node::load_string(
+      "a: |\n  2\nb: >-\n  7\nc: |\n  true\nd: &x |+\n  1\n  2\n\ne: *x\nf: |\n  abc\n"
+      "g: '2'\n",
+      "k.yaml");
+  const std::string block = "got a block scalar (| or >) holding ";
+  EXPECT_EQ(config_error_of([&] { root.get<double>("a"); }),
+            "k.yaml:1: a: expected a number, " + block +
+                "'2', a string in YAML (write the plain 2 instead)");
+  EXPECT_EQ(config_error_of([&] { root.get<int>("b"); }),
+            "k.yaml:3: b: expected an integer, " + block +
+                "'7', a string in YAML (write the plain 7 instead)");
+  EXPECT_EQ(config_error_of([&] { root.get<bool>("c"); }),
+            "k.yaml:5: c: expected true or false, " + block +
+                "'true', a string in YAML (write the plain true instead)");
+  EXPECT_EQ(config_error_of([&] { root.get<std::uint64_t>("d"); }),
+            "k.yaml:7: d: expected a non-negative integer, " + block + "'1\\n2', a string in YAML");
+  EXPECT_NE(config_error_of([&] { root.get<int>("e"); }).find(block + "'1\\n2'"),
+            std::string::npos);  // an alias of a block scalar
+  EXPECT_EQ(config_error_of([&] { root.get<double>("f"); }),
+            "k.yaml:12: f: expected a number, " + block + "'abc', a string in YAML");
+  EXPECT_EQ(config_error_of([&] { root.get<double>("g"); }),
+            "k.yaml:14: g: expected a number, got the quoted string '2' (write it without quotes)");
+  EXPECT_EQ(root.get<std::string>("a"), "2\n");  // a string key takes it as it is
+  // A byte order mark is not in yaml-cpp's positions; a --set value is told apart as well.
+  const Node bom = Node::load_string(
+      "\xEF\xBB\xBF"
+      "a: >\n  2\n",
+      "m.yaml");
+  EXPECT_EQ(config_error_of([&] { bom.get<int>("a"); }),
+            "m.yaml:1: a: expected an integer, " + block +
+                "'2', a string in YAML (write the plain 2 instead)");
+  Node set = Node::load_string("a: 1\n", "s.yaml");
+  apply_override(set.raw(), "a=|-\n  2");
+  EXPECT_EQ(config_error_of([&] { set.get<double>("a"); }),
+            "s.yaml:1: a: expected a number, " + block +
+                "'2', a string in YAML (write the plain 2 instead)");
+}
+
 // yaml-cpp reads a text starting with FF FE as UTF-16: `--set $'name=\xff\xfe'` was refused
 // for what the bytes became. A value that is not UTF-8 is named as such, with the byte offset.
 TEST(YamlStrict, OverrideValueThatIsNotUtf8NamesTheByte) {

@@ -12,10 +12,14 @@
 
 namespace cogmap::experiments {
 
-/// One varied key and its values, each as the YAML text `--set` would take ("55", "himm").
+/// One varied key and its values: each value as the results and run directories show it, and
+/// as the YAML text of its `--set` assignment, which reads back as the sweep file wrote it (a
+/// quoted '007' stays a quoted string, so a numeric key refuses it as it would in the
+/// experiment file; docs/experiment-format.md "Numbers").
 struct SweepAxis {
   std::string key;                  ///< dotted experiment key, e.g. "mapper.cell_scale_mm"
-  std::vector<std::string> values;  ///< YAML flow text of each value
+  std::vector<std::string> values;  ///< each value shown: a scalar's text ("007"), else flow YAML
+  std::vector<std::string> set_texts;  ///< each value's --set text ("\"007\"", "55", "[1, 2]")
 };
 
 /// A parsed sweep file.
@@ -29,7 +33,9 @@ struct SweepSpec {
 /// One run of a sweep.
 struct SweepRun {
   std::size_t index = 0;  ///< position in the stable expansion order
-  std::vector<std::pair<std::string, std::string>> values;  ///< (key, value text), vary order
+  std::vector<std::pair<std::string, std::string>> values;  ///< (key, value shown), vary order
+  /// The --set text of each value (SweepAxis::set_texts); when empty, the values as shown.
+  std::vector<std::string> set_texts;
   std::uint64_t seed = 0;
   /// Directory name under runs/: "key=value,...,seed=N", each part through
   /// safe_path_component (run_directory.h): '/', spaces and the like become '_'.
@@ -48,8 +54,8 @@ struct SweepLimits {
 
 /// Parses a sweep file strictly (keys: base, seeds, vary, description); throws
 /// yaml::ConfigError naming file, line and key. Refused as well: a seed or a value given twice
-/// (`[1, 1]`, `[55, "55"]`, or two values whose run directory names would be equal, which two
-/// threads would then write at once), and more runs than `limits.max_runs`.
+/// (`[1, 1]`, or two values whose run directory names would be equal, which two threads would
+/// then write at once: `[55, "55"]`, `["a b", a_b]`), and more runs than `limits.max_runs`.
 SweepSpec load_sweep(const std::filesystem::path& path, const SweepLimits& limits = {});
 
 /// The cartesian product of the axes (first axis slowest, last fastest), then seeds innermost.

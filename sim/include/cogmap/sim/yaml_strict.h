@@ -85,10 +85,11 @@ class Node {
   std::vector<std::string> keys() const;
 
   /// Converts a scalar; throws ConfigError naming the expected type. Numbers and booleans
-  /// follow one rule (docs/experiment-format.md "Numbers"): a plain scalar only (a quoted one
-  /// is a string in YAML: '2' is refused, not read as 2); integers as YAML 1.2's core schema
-  /// writes them (decimal, 0o octal, 0x hexadecimal) for int, uint64 and double keys alike,
-  /// within the key type's range.
+  /// follow one rule (docs/experiment-format.md "Numbers"): a plain scalar only (a quoted or
+  /// block one is a string in YAML: '2' is refused, not read as 2); integers as YAML 1.2's
+  /// core schema writes them (decimal, 0o octal, 0x hexadecimal) for int, uint64 and double
+  /// keys alike, within the key type's range; booleans as it writes them too (true, True,
+  /// TRUE, false, False, FALSE; YAML 1.1's yes, on, n... are refused).
   template <typename T>
   T as() const;
   /// Required key of type T.
