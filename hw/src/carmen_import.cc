@@ -34,6 +34,8 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
   std::optional<detail::Stamp> t0;  // of the first line that made a frame
   std::optional<Odometry> odometry;
   std::size_t unposed_sonar = 0;  // SONAR lines before the first ODOM
+  bool carmen_lines = false;      // any line CARMEN writes: a CARMEN log, whatever is in it
+  detail::LineTally tally;        // what the log holds, should it hold no sonar readings
   std::string text;
   std::size_t line_no = 0;
   const auto time_of = [&](const detail::Stamp& ts) {
@@ -45,6 +47,7 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
     auto tokens = detail::tokens_of(text);
     if (tokens.empty() || tokens[0][0] == '#') continue;
     const std::string kind = tokens[0];
+    carmen_lines = carmen_lines || detail::is_carmen_message(kind);
     detail::Fields f(path, line_no, std::move(tokens));
     if (kind == "ODOM") {
       // ODOM x y theta tv rv accel timestamp host logger_timestamp
@@ -55,6 +58,7 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
       frame.time_s = time_of(f.stamp(7, "timestamp"));
       odometry = Odometry{frame.odometry, frame.time_s};
       detail::push_frame(log, std::move(frame), path, line_no);
+      tally.read(kind);
     } else if (kind == "SONAR") {
       const double cone_rad = f.number(1, "cone_angle (rad)");
       const long n = f.integer(2, "num_sonars", 0, 255);
@@ -87,11 +91,13 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
         if (!odometry) {
           ++unposed_sonar;
           ++log.ignored_lines;
+          tally.skipped(kind, "before the first ODOM");
           continue;
         }
         frame.time_s = time_of(ts);
         if (frame.time_s - odometry->time_s > kMaxSonarOdomAgeS) {
           ++log.ignored_lines;
+          tally.skipped(kind, "more than 0.5 s after the latest ODOM");
           continue;
         }
         frame.odometry = odometry->pose;
@@ -106,8 +112,10 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
             detail::reading(static_cast<int>(i), ranges[i], frame.time_s, log.geometry));
       }
       detail::push_frame(log, std::move(frame), path, line_no);
+      tally.read(kind);
     } else {
       ++log.ignored_lines;
+      tally.skipped(kind);
     }
   }
   if (log.frames.empty() && unposed_sonar > 0) {
@@ -115,7 +123,10 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
                    " SONAR lines: a CARMEN SONAR line has no robot pose (it takes the latest "
                    "ODOM's), so there is nothing to map");
   }
-  detail::require_frames(log, path, "CARMEN", "ODOM or SONAR");
+  // A file without one CARMEN message is another format (a cogmap log read as CARMEN); a
+  // CARMEN log without sonar readings (lasers, odometry) says what it holds instead.
+  if (!carmen_lines) detail::require_frames(log, path, "CARMEN", "ODOM or SONAR");
+  detail::require_sonar_readings(log, path, "SONAR lines with ranges", tally);
   return log;
 }
 

@@ -107,6 +107,29 @@ TEST(CarmenImport, SonarOnlyLogSaysWhy) {
             "pose (it takes the latest ODOM's), so there is nothing to map");
 }
 
+// Before: a log of odometry and lasers imported with exit 0 into frames without one reading
+// (only ignored_lines hinted at it), and the replay mapped nothing. Now an error saying what
+// the log holds, in the words of the ROS bag importer's "no sonar topic (...); topics: ...".
+TEST(CarmenImport, LogWithoutSonarSaysWhatItHolds) {
+  const std::string flaser =
+      "FLASER 3 1.00 1.10 1.20 0.05 0.00 0.01 0.05 0.00 0.01 1100000000.010000 p2at 0.01\n";
+  const std::string param = "PARAM robot_front_laser_max 81.900000 1100000000.000000 p2at 0.0\n";
+  EXPECT_EQ(error_of(write_log("l.log", kLoggerHeader + param + kOdom1 + flaser + kOdom2 + flaser)),
+            "l.log: no sonar readings (SONAR lines with ranges); lines: PARAM (1 skipped), ODOM "
+            "(2 read), FLASER (2 skipped)");
+  EXPECT_EQ(error_of(write_log("o.log", kOdom1 + kOdom2)),
+            "o.log: no sonar readings (SONAR lines with ranges); lines: ODOM (2 read)");
+  // Lasers alone, no odometry: a CARMEN log all the same, not "not a CARMEN log".
+  EXPECT_EQ(error_of(write_log("f.log", flaser + flaser)),
+            "f.log: no sonar readings (SONAR lines with ranges); lines: FLASER (2 skipped)");
+  // SONAR lines that cannot be placed say why.
+  const std::string late =
+      "SONAR 0.261799 1 1.40 0.147 0.136 1.570796 1100000000.700000 p2at 0.701234\n";
+  EXPECT_EQ(error_of(write_log("s.log", kOdom1 + late)),
+            "s.log: no sonar readings (SONAR lines with ranges); lines: ODOM (1 read), SONAR (1 "
+            "skipped: more than 0.5 s after the latest ODOM)");
+}
+
 // Every other message CARMEN writes is skipped and counted, wherever it comes (was and is).
 TEST(CarmenImport, OtherMessagesInterleavedAreSkipped) {
   const std::string text =
@@ -166,9 +189,10 @@ TEST(CarmenImport, EpochTimestampsKeepMicroseconds) {
       "ODOM 0 0 0 0 0 0 1100000000.000001 p2at 0.0\n"
       "ODOM 0 0 0 0 0 0 1100000000.050000 p2at 0.0\n"
       "ODOM 0 0 0 0 0 0 1100001234.567891 p2at 0.0\n"
-      "ODOM 0 0 0 0 0 0 1.1000012346e9 p2at 0.0\n";
+      "ODOM 0 0 0 0 0 0 1.1000012346e9 p2at 0.0\n"
+      "SONAR 0.261799 1 1.40 0.147 0.136 1.570796 1100001234.600000 p2at 0.0\n";
   const ImportedLog log = import_carmen_log(write_log("l.log", text));
-  ASSERT_EQ(log.frames.size(), 5u);
+  ASSERT_EQ(log.frames.size(), 6u);
   EXPECT_EQ(log.frames[1].time_s, 0.000001);
   EXPECT_EQ(log.frames[2].time_s, 0.05);
   EXPECT_EQ(log.frames[3].time_s, 1234.567891);

@@ -1,5 +1,6 @@
 #include "import_common.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -137,6 +138,59 @@ void require_frames(const ImportedLog& log, const std::filesystem::path& path, c
     throw LogError(path.string() + ": no " + lines + " lines: not a " + format +
                    " log, or an empty one (" + std::to_string(log.ignored_lines) + " other lines)");
   }
+}
+
+bool is_carmen_message(const std::string& name) {
+  // The message names CARMEN's logger and its tools write (writelog.c, the logger's header),
+  // each between spaces.
+  static constexpr std::string_view kCarmenMessages =
+      " PARAM SYNC ODOM TRUEPOS GLOBALPOS FLASER RLASER LASER3 LASER4 REMISSIONFLASER"
+      " REMISSIONRLASER REMISSIONLASER3 REMISSIONLASER4 RAWLASER1 RAWLASER2 RAWLASER3 RAWLASER4"
+      " ROBOTLASER1 ROBOTLASER2 POSITIONLASER NMEAGGA NMEARMC GPSNMEA SONAR BUMPER SCANMARK IMU"
+      " VECTORMOVE ROBOTVELOCITY FOLLOWTRAJECTORY BASEVELOCITY ARM COMMENT ";
+  return kCarmenMessages.find(" " + name + " ") != std::string_view::npos;
+}
+
+LineTally::Entry& LineTally::entry(const std::string& kind) {
+  const auto [it, added] = index_.try_emplace(kind, entries_.size());
+  if (added) entries_.push_back(Entry{kind, 0, 0, {}});
+  return entries_[it->second];
+}
+
+void LineTally::skipped(const std::string& kind, const std::string& why) {
+  Entry& e = entry(kind);
+  e.skipped++;
+  if (!why.empty() && std::find(e.whys.begin(), e.whys.end(), why) == e.whys.end()) {
+    e.whys.push_back(why);
+  }
+}
+
+std::string LineTally::describe() const {
+  constexpr std::size_t kListed = 12;  // a file of garbage has a kind per line
+  std::string out;
+  for (std::size_t i = 0; i < entries_.size() && i < kListed; ++i) {
+    const Entry& e = entries_[i];
+    if (i > 0) out += ", ";
+    out += printable(e.kind, 40) + " (";
+    if (e.read > 0) out += std::to_string(e.read) + " read";
+    if (e.read > 0 && e.skipped > 0) out += ", ";
+    if (e.skipped > 0) out += std::to_string(e.skipped) + " skipped";
+    for (std::size_t w = 0; w < e.whys.size(); ++w) out += (w == 0 ? ": " : "; ") + e.whys[w];
+    out += ")";
+  }
+  if (entries_.size() > kListed) {
+    out += " and " + std::to_string(entries_.size() - kListed) + " more kinds";
+  }
+  return out.empty() ? "none" : out;
+}
+
+void require_sonar_readings(const ImportedLog& log, const std::filesystem::path& path,
+                            const char* wanted, const LineTally& tally) {
+  for (const mapper::SensorFrame& f : log.frames) {
+    if (!f.sonar.empty()) return;
+  }
+  throw LogError(path.string() + ": no sonar readings (" + wanted +
+                 "); lines: " + tally.describe());
 }
 
 }  // namespace cogmap::hw::detail

@@ -1,12 +1,14 @@
 #pragma once
 // What the CARMEN and Player importers share (internal to hw/): numbered fields of one line with
 // errors naming file:line and the field, timestamps kept as exact decimals, a reading from a
-// range, and the checks every imported frame gets.
+// range, the checks every imported frame gets, and the tally of lines that says what a log
+// without sonar readings holds instead.
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,5 +66,38 @@ void push_frame(ImportedLog& log, mapper::SensorFrame frame, const std::filesyst
 /// A file with none of the lines an importer reads is not a log of that format.
 void require_frames(const ImportedLog& log, const std::filesystem::path& path, const char* format,
                     const char* lines);
+
+/// A message name CARMEN's logger or its tools write (ODOM, SONAR, FLASER, PARAM, ...).
+bool is_carmen_message(const std::string& name);
+
+/// The lines of each kind (a CARMEN message, a Player device) an importer read or skipped, in
+/// the order first seen: what a log without sonar readings holds instead.
+class LineTally {
+ public:
+  void read(const std::string& kind) { entry(kind).read++; }
+  /// `why` (may be empty) is listed once per kind however often it is given.
+  void skipped(const std::string& kind, const std::string& why = "");
+  bool empty() const { return entries_.empty(); }
+  /// "ODOM (600 read), FLASER (1204 skipped), SONAR (3 read, 2 skipped: why)": the first 12
+  /// kinds, then how many more.
+  std::string describe() const;
+
+ private:
+  struct Entry {
+    std::string kind;
+    std::size_t read = 0;
+    std::size_t skipped = 0;
+    std::vector<std::string> whys;
+  };
+  Entry& entry(const std::string& kind);
+  std::vector<Entry> entries_;
+  std::map<std::string, std::size_t> index_;
+};
+
+/// Throws LogError "<file>: no sonar readings (<wanted>); lines: <tally>" unless some frame has
+/// a reading: a log of odometry or lasers alone maps nothing (the ROS bag importer's "no sonar
+/// topic" in the same words).
+void require_sonar_readings(const ImportedLog& log, const std::filesystem::path& path,
+                            const char* wanted, const LineTally& tally);
 
 }  // namespace cogmap::hw::detail

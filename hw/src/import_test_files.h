@@ -1,6 +1,6 @@
 #pragma once
 /// Test support for the log importers' tests: a log file written into the test's own scratch
-/// folder, and the error an import of it ends in.
+/// folder, the error an import of it ends in, and the header Player's writelog writes.
 
 #include <gtest/gtest.h>
 
@@ -34,6 +34,20 @@ std::string import_error(Import import, const std::filesystem::path& p) {
     return what.substr(what.find(p.filename().string()));
   }
   return "";
+}
+
+/// The header WriteLog::OpenFile writes (Player 2.x and 3.x alike; note the spaces before the
+/// newlines): 8 lines, so a file's first data line is line 9.
+inline std::string writelog_header(const std::string& player_version) {
+  return "## Player version " + player_version +
+         " \n"
+         "## File version 0.3.0 \n"
+         "## Format: \n"
+         "## - Messages are newline-separated\n"
+         "## - Common header to each message is:\n"
+         "##   time     host   robot  interface index  type   subtype\n"
+         "##   (double) (uint) (uint) (string)  (uint) (uint) (uint)\n"
+         "## - Following the common header is the message payload \n";
 }
 
 }  // namespace cogmap::hw::testing

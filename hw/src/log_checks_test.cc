@@ -163,14 +163,17 @@ TEST(LogChecks, ByteOrderMarkAndCrlfAreRead) {
   }
   const fs::path carmen =
       write_log("bom.carmen.log",
-                bom + "# CARMEN log\nODOM 0 0 0 0 0 0 100.0 h 0\nODOM 0.05 0 0 0 0 0 100.1 h 0\n");
+                bom +
+                    "# CARMEN log\nODOM 0 0 0 0 0 0 100.0 h 0\nODOM 0.05 0 0 0 0 0 100.1 h 0\n"
+                    "SONAR 0.5 1 1.5 0.1 0 0 100.1 h 0\n");
   EXPECT_EQ(detect_log_format(carmen), LogFormat::kCarmen);
-  EXPECT_EQ(import_carmen_log(carmen).frames.size(), 2u);
+  EXPECT_EQ(import_carmen_log(carmen).frames.size(), 3u);
   const fs::path player =
       write_log("bom.player.log", bom +
                                       "## Player version 2.0.5\n"
                                       "1.0 h 6665 position2d 00 001 001 0 0 0 0 0 0 0\n"
-                                      "1.1 h 6665 position2d 00 001 001 0.05 0 0 0 0 0 0\n");
+                                      "1.1 h 6665 position2d 00 001 001 0.05 0 0 0 0 0 0\n"
+                                      "1.1 h 6665 sonar 00 001 001 1 1.5\n");
   EXPECT_EQ(detect_log_format(player), LogFormat::kPlayer);
   EXPECT_EQ(import_player_log(player).frames.size(), 2u);
 }

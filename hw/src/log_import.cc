@@ -11,18 +11,6 @@
 namespace cogmap::hw {
 namespace {
 
-// The message names CARMEN's logger and its tools write (writelog.c, the logger's header),
-// each between spaces.
-constexpr std::string_view kCarmenMessages =
-    " PARAM SYNC ODOM TRUEPOS GLOBALPOS FLASER RLASER LASER3 LASER4 REMISSIONFLASER"
-    " REMISSIONRLASER REMISSIONLASER3 REMISSIONLASER4 RAWLASER1 RAWLASER2 RAWLASER3 RAWLASER4"
-    " ROBOTLASER1 ROBOTLASER2 POSITIONLASER NMEAGGA NMEARMC GPSNMEA SONAR BUMPER SCANMARK IMU"
-    " VECTORMOVE ROBOTVELOCITY FOLLOWTRAJECTORY BASEVELOCITY ARM COMMENT ";
-
-bool is_carmen_message(const std::string& t) {
-  return kCarmenMessages.find(" " + t + " ") != std::string_view::npos;
-}
-
 bool all_digits(const std::string& t) {
   return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
@@ -53,7 +41,7 @@ LogFormat detect_log_format(const std::filesystem::path& path) {
     const auto t = detail::tokens_of(text);
     if (t.empty() || t[0][0] == '#') continue;
     if (t[0] == kLogMagic) return LogFormat::kCogmap;
-    if (is_carmen_message(t[0])) return LogFormat::kCarmen;
+    if (detail::is_carmen_message(t[0])) return LogFormat::kCarmen;
     // A writelog line of any interface; or Player 1.x's `position` (the importer says why it
     // does not read it).
     if (is_player_line(t) || (t.size() >= 6 && t[3] == "position")) return LogFormat::kPlayer;

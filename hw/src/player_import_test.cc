@@ -23,16 +23,8 @@ std::string error_of(const fs::path& p) {
   return testing::import_error([](const fs::path& f) { return import_player_log(f); }, p);
 }
 
-// WriteLog::OpenFile (Player 2.1): note the spaces before the newlines.
-const std::string kHeader =
-    "## Player version 2.1.3 \n"
-    "## File version 0.3.0 \n"
-    "## Format: \n"
-    "## - Messages are newline-separated\n"
-    "## - Common header to each message is:\n"
-    "##   time     host   robot  interface index  type   subtype\n"
-    "##   (double) (uint) (uint) (string)  (uint) (uint) (uint)\n"
-    "## - Following the common header is the message payload \n";
+// WriteLog::OpenFile (Player 2.1).
+const std::string kHeader = testing::writelog_header("2.1.3");
 
 // Geometry replies (type 4 = RESP_ACK): sonar "%u " then "%+07.3f %+07.3f %+07.4f " per pose;
 // position2d "%+07.3f %+07.3f %+04.3f %+07.3f %+07.3f" (pose, length, width).
@@ -161,14 +153,16 @@ TEST(PlayerImport, GeometryThatChangesIsRefused) {
   // The same mounts again (a driver publishing its geometry as data) are fine.
   const std::string same = kHeader + kSonarGeom + position("1200000000.000", "00", "+00.000") +
                            "1200000000.050 16777343 6665 sonar 00 001 002 2 +00.147 +00.136 "
-                           "+1.5708 +00.193 +00.119 +0.8727 \n";
+                           "+1.5708 +00.193 +00.119 +0.8727 \n" +
+                           ranges("1200000000.050", "00", "2 1.5 1.6");
   EXPECT_EQ(error_of(write_log("q.log", same)), "");
 }
 
 // p2os reports stall as 0 or 1; the payload field is a uint8_t, so any non-zero is a stall.
 TEST(PlayerImport, StallIsAnyNonZero) {
   const ImportedLog log = import_player_log(
-      write_log("p.log", kHeader + position("1200000000.000", "00", "+00.000", 3)));
+      write_log("p.log", kHeader + position("1200000000.000", "00", "+00.000", 3) +
+                             ranges("1200000000.000", "00", "1 1.5")));
   ASSERT_EQ(log.frames.size(), 1u);
   EXPECT_TRUE(log.frames[0].stall_left);
   EXPECT_NE(error_of(write_log("q.log", kHeader + position("1200000000.000", "00", "+0", 256)))
@@ -207,6 +201,27 @@ TEST(PlayerImport, DetectedWithoutHeader) {
   EXPECT_EQ(
       detect_log_format(write_log("q.log", "1200000000.000 16777343 6665 localize 00 001 001\n")),
       LogFormat::kPlayer);
+}
+
+// Before: odometry and a laser imported with exit 0 into frames without one reading (only
+// ignored_lines hinted at it), and the replay mapped nothing. Now an error saying what the log
+// holds, in the words of the ROS bag importer's "no sonar topic (...); topics: ...".
+TEST(PlayerImport, LogWithoutSonarSaysWhatItHolds) {
+  const std::string laser =
+      " 16777343 6665 laser 00 001 001 0001 -1.5708 +1.5708 +0.01745329 +08.0000 0002 1.000  0 "
+      "1.100  0 \n";
+  const std::string text = kHeader + kPositionGeom + position("1200000000.000", "00", "+00.000") +
+                           "1200000000.000" + laser + position("1200000000.100", "00", "+00.050") +
+                           "1200000000.100" + laser;
+  EXPECT_EQ(error_of(write_log("p.log", text)),
+            "p.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
+            "element); lines: 6665:position2d:0 (2 read, 1 skipped), 6665:laser:0 (2 skipped)");
+  // Sonar lines of another robot only: still none of this robot's.
+  const std::string other = kHeader + position("1200000000.000", "00", "+00.000") +
+                            ranges("1200000000.000", "00", "2 1.5 1.6", "6666");
+  EXPECT_EQ(error_of(write_log("q.log", other)),
+            "q.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
+            "element); lines: 6665:position2d:0 (1 read), 6666:sonar:0 (1 skipped)");
 }
 
 // Lines of the types read stay strict: the file, the line and the field.

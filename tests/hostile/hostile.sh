@@ -46,7 +46,9 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   log_time_gap_jump set_robot_sonar_key sweep_merge_open_quote run_out_empty sweep_out_empty
   run_out_dangling_link experiment_quoted_number set_int_hex_overflow set_value_not_utf8
   world_check_start_outside run_start_outside bag_undeclared_connection bag_cloud_points_2g
-  bag_cloud2_data_1g5 log_player_v1 log_carmen_sonar_only)
+  bag_cloud2_data_1g5 log_player_v1 log_carmen_sonar_only log_carmen_laser_only
+  log_player_ranger_bad_geometry experiment_bool_yaml11 experiment_block_scalar_number
+  sweep_vary_quoted_number)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -286,6 +288,22 @@ setup() {
       printf 'SONAR 0.261799 2 1.50 2.25 0.147 0.136 1.570796 0.193 0.119 0.872665 1100000000.050000 p2at 0.05\n' >"$d/l.log"
       cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
       want_text="l.log: no ODOM line before its 1 SONAR lines: a CARMEN SONAR line has no robot pose"
+      check() { [[ ! -e $d/run ]]; } ;;
+    log_carmen_laser_only)  # odometry and a laser, no SONAR line
+      printf '%s\n' 'ODOM 0 0 0 0 0 0 1100000000.000000 p2at 0.0' \
+        'FLASER 3 1.00 1.10 1.20 0.05 0.00 0.01 0.05 0.00 0.01 1100000000.010000 p2at 0.01' \
+        'ODOM 0.05 0 0 0 0 0 1100000000.100000 p2at 0.1' \
+        'FLASER 3 1.00 1.10 1.20 0.05 0.00 0.01 0.05 0.00 0.01 1100000000.110000 p2at 0.11' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log: no sonar readings (SONAR lines with ranges); lines: ODOM (2 read), FLASER (2 skipped)"
+      check() { [[ ! -e $d/run ]]; } ;;
+    log_player_ranger_bad_geometry)  # Player 3 (Stage 4): a ranger geometry cut after 1 of 16 poses
+      printf '%s\n' '## Player version 3.0.2 ' '## File version 0.3.0 ' \
+        '1300000000.000 16777343 6665 ranger 00 004 001 +00.000 +00.000 +00.000 +00.000 +00.000 +00.000 +00.000 +00.000 +00.000 0016 +00.069 +00.136 +00.000 +00.000 +00.000 +01.571' \
+        '1300000000.100 16777343 6665 position2d 00 001 001 +00.000 +00.000 +0.000 +00.000 +00.000 +00.000 0' \
+        '1300000000.100 16777343 6665 ranger 00 001 001 0002 1.500 2.250 ' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:3: expected ranger geometry: 16 element poses (px py pz proll ppitch pyaw) then element_sizes_count at field 24, got 'end of line'"
       check() { [[ ! -e $d/run ]]; } ;;
     log_dev_zero)
       cmd=("$cogmap" replay /dev/zero --format cogmap --out "$d/run"); want_rc=2
@@ -589,6 +607,24 @@ PY
       cmd=("$cogmap" run "$d/e.yaml" --set $'name=\xff\xfe' --out "$d/run"); want_rc=2
       want_text='e.yaml:1: name: not valid UTF-8 text (byte 0xff at offset 0); a --set value is YAML text, which must be UTF-8 (from --set name=\xff\xfe)'
       check() { [[ ! -e $d/run ]]; } ;;
+    experiment_bool_yaml11)  # YAML 1.1's "no" was read as false: exit 0, figures off
+      printf 'name: e\nworld: %s\nduration_s: 2\nrobot: {source: sim}\noutput: {figures: no}\n' \
+        "$W/two_rooms.yaml" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:5: output.figures: expected true or false, got 'no': a YAML 1.1 boolean, which YAML 1.2 reads as a string (write false)"
+      check() { [[ ! -e $d/run ]]; } ;;
+    experiment_block_scalar_number)  # was read as 2: a 2 s run, exit 0
+      printf 'name: e\nworld: %s\nduration_s: |\n  2\nrobot: {source: sim}\noutput: {figures: false}\n' \
+        "$W/two_rooms.yaml" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:3: duration_s: expected a number, got a block scalar (| or >) holding '2'"
+      check() { [[ ! -e $d/run ]]; } ;;
+    sweep_vary_quoted_number)  # the quotes were lost on the way to --set: 0.5 s runs, exit 0
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf "base: e.yaml\nseeds: [1]\nvary:\n  duration_s:\n    - 1\n    - '0.5'\n" >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --out "$d/sw" --no-plots); want_rc=2
+      want_text="s.sweep.yaml:6: vary.duration_s[1]: expected a number, got the quoted string '0.5' (write it without quotes)"
+      check() { [[ ! -e $d/sw ]]; } ;;
     world_check_start_outside)  # OK and nothing else: the robot would have heard nothing
       printf 'name: w\nwalls: {polylines: [[[0,0],[10,0],[10,10],[0,10],[0,0]]]}\nstart: {x_m: 15, y_m: 5}\n' >"$d/w.yaml"
       cmd=("$cogmap" world check "$d/w.yaml"); want_rc=0
