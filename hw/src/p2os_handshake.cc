@@ -38,7 +38,14 @@ bool P2osRobot::handshake() {
   const auto give_up = Clock::now() + options_.handshake_timeout;
   int attempts = 0;
   std::string last_problem;  // why the latest attempt did not finish, for the failure message
-  for (; attempts < options_.sync_attempts && Clock::now() < give_up; ++attempts) {
+  // A packet of any kind came back: a robot is there, perhaps slow or confused, and gets all
+  // sync_attempts; a port where nothing answers gets silent_sync_attempts (as ARIA does).
+  bool answered = false;
+  bool out_of_time = false;  // an attempt ran into give_up: no new one starts
+  for (; attempts < options_.sync_attempts &&
+         (answered || attempts < options_.silent_sync_attempts) && !out_of_time &&
+         Clock::now() < give_up;
+       ++attempts) {
     {
       std::lock_guard lock(mutex_);
       if (stopping_) break;
@@ -52,7 +59,7 @@ bool P2osRobot::handshake() {
     std::uint64_t step_from = decoder_.offset();  // bytes fed from here on belong to this step
     bool step_packet = false;                     // a packet (of any type) framed in this step
     while (step < 3 && !restart) {
-      const auto left = std::chrono::duration_cast<milliseconds>(step_deadline - Clock::now());
+      const auto left = std::chrono::ceil<milliseconds>(step_deadline - Clock::now());
       const auto packet = left.count() > 0 ? read_packet(left) : std::nullopt;
       if (!packet) {
         const std::string no_reply = "no reply to SYNC" + std::to_string(step) + " within " +
@@ -68,9 +75,12 @@ bool P2osRobot::handshake() {
           if (step_packet) ++answered_attempts_;
         }
         restart = true;  // no echo in time: start again from SYNC0
+        // Cut short by the overall bound: new attempts would each send a SYNC0 and wait for
+        // nothing in the last moments before give_up, and the message counted them.
+        out_of_time = step_deadline >= give_up;
         break;
       }
-      step_packet = true;
+      step_packet = answered = true;
       const std::uint8_t type = packet->type();
       if (p2os::is_sip(type)) {
         // The robot was left open by an earlier client: close it and sync from scratch.
@@ -169,6 +179,7 @@ bool P2osRobot::handshake() {
   failure_ = "no complete SYNC0-2 exchange in " + std::to_string(attempts) + " attempts, " +
              std::to_string(spent.count()) + " ms (limits " +
              std::to_string(options_.sync_attempts) + " attempts, " +
+             std::to_string(options_.silent_sync_attempts) + " while nothing answers, " +
              std::to_string(options_.handshake_timeout.count()) + " ms)";
   if (bad_bytes) failure_ += "; only bytes that do not decode as P2OS came back";
   if (!last_problem.empty()) failure_ += "; last: " + last_problem;

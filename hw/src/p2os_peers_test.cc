@@ -149,6 +149,103 @@ TEST(P2osPeers, SlowSyncRepliesWithinTheTimeoutConnect) {
   robot.shutdown();
 }
 
+// SYNC replies 800 ms after each SYNC (a slow radio modem or network-serial bridge), with the
+// options a real robot gets: ARIA waits 1 s for each echo and connects; our 500 ms restarted
+// at SYNC0 every time, the stale echoes piled up and the handshake failed. Now it connects in
+// its first round.
+TEST(P2osPeers, SyncRepliesAfter800MsConnectWithDefaults) {
+  auto [ours, theirs] = make_memory_pair();
+  PeerScript script;
+  script.sync_delay = 800ms;
+  script.sip = [](std::uint64_t n) {
+    return sip_body(0x32, static_cast<std::uint16_t>(n), 0, 0, {{2, 700}});
+  };
+  ScriptedPeer peer(std::move(theirs), script);
+  P2osRobot robot(std::move(ours), P2osRobotOptions{});
+  EXPECT_EQ(robot.identity().subclass, "p2at");
+  EXPECT_EQ(peer.sync0s(), 1);  // one round: no SYNC timed out
+  EXPECT_GE(frames_for(robot, 300ms).size(), 3u);
+  EXPECT_EQ(robot.stats().connections, 1);
+  robot.shutdown();
+}
+
+// Nothing answers (a port with no robot behind it): the handshake fails with the same error
+// as before, after ARIA's 6 unanswered SYNCs of 1 s each, far inside handshake_timeout.
+TEST(P2osPeers, SilentPortFailsAfterSixSyncsOfOneSecond) {
+  auto [ours, theirs] = make_memory_pair();  // `theirs` stays open and never answers
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    P2osRobot robot(std::move(ours), P2osRobotOptions{});
+    FAIL() << "expected P2osHandshakeError";
+  } catch (const P2osHandshakeError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.kind(), P2osFailureKind::kLink) << what;
+    EXPECT_NE(what.find("P2OS handshake failed: no complete SYNC0-2 exchange in 6 attempts"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("last: no reply to SYNC0 within 1000 ms"), std::string::npos) << what;
+  }
+  const auto took = std::chrono::steady_clock::now() - started;
+  EXPECT_GE(took, 5900ms);
+  EXPECT_LT(took, 7500ms);
+}
+
+// A silent port under a short overall bound (`drive --duration 3`): the attempt that runs into
+// the bound is the last. The wait left before it was truncated to whole milliseconds, so in
+// its last millisecond every remaining attempt sent a SYNC0 and waited for nothing, and "in
+// 11 attempts" was reported for three.
+TEST(P2osPeers, HandshakeCutByItsBoundCountsOnlyRealAttempts) {
+  auto [ours, theirs] = make_memory_pair();
+  P2osRobotOptions o = quick_options();
+  o.sync_reply_timeout = 200ms;
+  o.silent_sync_attempts = 100;
+  o.handshake_timeout = 500ms;  // 200 + 200 + 100 ms
+  try {
+    P2osRobot robot(std::move(ours), o);
+    FAIL() << "expected P2osHandshakeError";
+  } catch (const P2osHandshakeError& e) {
+    EXPECT_NE(std::string(e.what()).find("no complete SYNC0-2 exchange in 3 attempts"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// A peer that echoes SYNC0 but never SYNC1 is there, just not answering right: it gets all
+// sync_attempts rounds (ARIA allows 10 unanswered SYNCs once one was answered), where a
+// silent port gets silent_sync_attempts.
+TEST(P2osPeers, AnsweringPeerGetsAllAttempts) {
+  auto [ours, theirs] = make_memory_pair();
+  std::atomic<bool> stop{false};
+  std::thread peer([&stop, link = theirs.get()] {
+    p2os::PacketDecoder decoder;
+    std::uint8_t buf[64];
+    try {
+      while (!stop) {
+        decoder.feed({buf, link->read(buf, 5ms)});
+        while (auto p = decoder.next()) {
+          if (p->type() == 0 && p->body.size() == 1) {
+            link->write(p2os::encode_command(p2os::Command::kSync0));
+          }
+        }
+      }
+    } catch (const StreamError&) {
+      // our end closed
+    }
+  });
+  P2osRobotOptions o = quick_options();
+  o.sync_reply_timeout = 100ms;
+  try {
+    P2osRobot robot(std::move(ours), o);
+    ADD_FAILURE() << "expected P2osHandshakeError";
+  } catch (const P2osHandshakeError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("no complete SYNC0-2 exchange in 11 attempts"), std::string::npos) << what;
+    EXPECT_NE(what.find("last: no reply to SYNC1 within 100 ms"), std::string::npos) << what;
+  }
+  stop = true;
+  peer.join();
+}
+
 // A robot an earlier client left open, streaming older P2OS SIPs (no BATTERYX10 ... tail),
 // whose firmware echoes SYNC0 even while open and goes on streaming until CLOSE: the echo
 // must not be taken for the start of a handshake with SIPs still coming. The SIP is seen,

@@ -65,7 +65,9 @@ std::optional<p2os::Packet> P2osRobot::read_packet(milliseconds timeout) {
   for (;;) {
     if (auto p = decoder_.next()) return p;
     if (stall_guard_.check(decoder_, Clock::now())) continue;
-    const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now());
+    // Rounded up, so the wait lasts the whole timeout: truncated, it ended up to 1 ms early
+    // and the handshake started one more attempt in the last moment before its bound.
+    const auto left = std::chrono::ceil<milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) return std::nullopt;
     receive(left);
   }

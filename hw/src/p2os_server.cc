@@ -1,4 +1,5 @@
-// Robot side of P2OS: sync state machine, command handling, SIP streaming and watchdog.
+// Robot side of P2OS: sync state machine, command handling, SIP, encoder and IO packet
+// streaming and watchdog.
 #include "cogmap/hw/p2os_server.h"
 
 #include <algorithm>
@@ -160,6 +161,7 @@ void P2osServer::handle(const p2os::Packet& packet) {
       open_ = true;
       motors_ = false;
       sonar_on_ = true;
+      encoder_stream_ = io_stream_ = Stream::kOff;  // a new client asks for its own
       last_command_ = Clock::now();
       if (options_.log) options_.log("client connected: robot open");
       return;
@@ -182,6 +184,7 @@ void P2osServer::handle(const p2os::Packet& packet) {
     case Command::kClose:
       open_ = false;
       sync_step_ = 0;
+      encoder_stream_ = io_stream_ = Stream::kOff;
       set_motion(0.0, 0.0);
       if (options_.log) options_.log("client closed");
       break;
@@ -259,8 +262,60 @@ void P2osServer::handle(const p2os::Packet& packet) {
     case Command::kEStop:
       set_motion(0.0, 0.0);
       break;
+    case Command::kEncoder:
+      // ARIA's requestEncoderPackets sends 2 and stopEncoderPackets 0; its connection tester
+      // asks for one packet at a time with 1. AMRISim (MobileSim) ignores ENCODER and IOREQUEST.
+      encoder_stream_ = stream_request(arg);
+      break;
+    case Command::kIoRequest:
+      // ARIA's requestIOPackets sends 2, stopIOPackets 0, its IO request test 1.
+      io_stream_ = stream_request(arg);
+      break;
     default:
       break;  // PULSE and commands this model does not implement: watchdog only
+  }
+}
+
+P2osServer::Stream P2osServer::stream_request(std::optional<int> arg) {
+  if (!arg || *arg <= 0) return Stream::kOff;
+  return *arg == 1 ? Stream::kOnce : Stream::kEverySip;
+}
+
+void P2osServer::count_wheel_travel(const mapper::Pose2& from, const mapper::Pose2& to) {
+  // The wheel travel the firmware's odometry integrates back into this step: the chord along
+  // the heading (signed by direction) and the turn over the model's odometry track (2 /
+  // DiffConvFactor of its ARIA parameters), so the counts agree with the SIP's pose.
+  const mapper::Pose2 step = from.inverse().compose(to);
+  const double chord_mm = std::hypot(step.x_m, step.y_m) * 1000.0;
+  const double forward_mm = step.x_m < 0.0 ? -chord_mm : chord_mm;
+  const double turn_rad = mapper::wrap_angle_rad(to.theta_rad - from.theta_rad);
+  const double half_track_mm = body_.geometry().odometry_track_m * 1000.0 / 2.0;
+  left_wheel_mm_ += forward_mm - turn_rad * half_track_mm;
+  right_wheel_mm_ += forward_mm + turn_rad * half_track_mm;
+}
+
+void P2osServer::send_requested_packets() {
+  if (encoder_stream_ != Stream::kOff) {
+    // One count per position unit (DistConvFactor mm, 1.32 for the p2at), the unit of XPOS
+    // and YPOS: P2OS reports no encoder ticks per mm (CONFIG sends 0, as AMRISim's does), so
+    // this is the one scale a client already has. The 32-bit counters wrap.
+    const auto count = [this](double mm) {
+      const auto ticks = std::llround(mm / factors_.distance_mm_per_unit);
+      return static_cast<std::int32_t>(static_cast<std::uint32_t>(ticks));
+    };
+    stream_.write(
+        p2os::frame(p2os::encode_encoder_packet({count(left_wheel_mm_), count(right_wheel_mm_)})));
+    if (encoder_stream_ == Stream::kOnce) encoder_stream_ = Stream::kOff;
+    std::lock_guard lock(stats_mutex_);
+    ++stats_.encoder_packets;
+  }
+  if (io_stream_ != Stream::kOff) {
+    // The simulator has no user I/O. The lists mirror what the SIP carries of it (one DIGIN
+    // byte, one DIGOUT byte, one ANALOG reading), all zero there as here.
+    stream_.write(p2os::frame(p2os::encode_io_packet({{0}, {0}, {0}})));
+    if (io_stream_ == Stream::kOnce) io_stream_ = Stream::kOff;
+    std::lock_guard lock(stats_mutex_);
+    ++stats_.io_packets;
   }
 }
 
@@ -270,6 +325,8 @@ void P2osServer::step_and_send_sip() {
   if (!have_odometry_) {
     origin_ = frame->odometry;  // counters start at zero where the robot powers up
     have_odometry_ = true;
+  } else {
+    count_wheel_travel(last_odometry_, frame->odometry);
   }
   last_odometry_ = frame->odometry;
   if (!open_) return;
@@ -327,6 +384,7 @@ void P2osServer::step_and_send_sip() {
     std::lock_guard lock(stats_mutex_);
     ++stats_.sips_sent;
   }
+  send_requested_packets();
 }
 
 void P2osServer::run(const std::atomic<bool>& stop) {
@@ -347,6 +405,8 @@ void P2osServer::run(const std::atomic<bool>& stop) {
           origin_ = last_odometry_;  // the controller's counters restart at zero
           options_.initial_x_count = 0;
           options_.initial_y_count = 0;
+          left_wheel_mm_ = right_wheel_mm_ = 0.0;
+          encoder_stream_ = io_stream_ = Stream::kOff;
         }
         if (open_ && Clock::now() - last_command_ > options_.watchdog &&
             (v_mps_ != 0.0 || w_radps_ != 0.0)) {
@@ -365,6 +425,7 @@ void P2osServer::run(const std::atomic<bool>& stop) {
             !stream_.accepts_writes()) {
           open_ = false;
           sync_step_ = 0;
+          encoder_stream_ = io_stream_ = Stream::kOff;
           {
             std::lock_guard lock(stats_mutex_);
             ++stats_.client_timeouts;

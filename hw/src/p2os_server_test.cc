@@ -8,7 +8,7 @@
 #include <string_view>
 #include <thread>
 
-#include "test_streams.h"
+#include "p2os_served.h"
 
 namespace cogmap::hw {
 namespace {
@@ -16,54 +16,9 @@ namespace {
 using namespace std::chrono_literals;
 using p2os::Command;
 
-// Reads packets from `link` until one of `type` arrives (or 2 s pass).
-std::optional<p2os::Packet> await(ByteStream& link, p2os::PacketDecoder& d, std::uint8_t type) {
-  const auto end = std::chrono::steady_clock::now() + 2s;
-  std::uint8_t buf[256];
-  while (std::chrono::steady_clock::now() < end) {
-    while (auto p = d.next()) {
-      if (p->type() == type) return p;
-    }
-    const std::size_t n = link.read(buf, 20ms);
-    d.feed({buf, n});
-  }
-  return std::nullopt;
-}
-
-struct Served {
-  std::unique_ptr<ByteStream> robot_end, client;
-  std::unique_ptr<testing::BackedUpStream> link;  // the server's view of robot_end
-  testing::KinematicBody body;
-  std::unique_ptr<P2osServer> server;
-  std::atomic<bool> stop{false};
-  std::thread thread;
-  p2os::PacketDecoder decoder;
-
-  explicit Served(P2osServerOptions options = {}) {
-    auto pair = make_memory_pair();
-    robot_end = std::move(pair.first);
-    client = std::move(pair.second);
-    link = std::make_unique<testing::BackedUpStream>(*robot_end);
-    server = std::make_unique<P2osServer>(*link, body, options);
-    thread = std::thread([this] { server->run(stop); });
-  }
-  ~Served() {
-    stop = true;
-    thread.join();
-  }
-  void open() {
-    client->write(p2os::encode_command(Command::kSync0));
-    ASSERT_TRUE(await(*client, decoder, 0));
-    client->write(p2os::encode_command(Command::kSync1));
-    ASSERT_TRUE(await(*client, decoder, 1));
-    client->write(p2os::encode_command(Command::kSync2));
-    const auto id = await(*client, decoder, 2);
-    ASSERT_TRUE(id);
-    EXPECT_EQ(p2os::decode_sync2(id->body).subclass, "p2at");
-    client->write(p2os::encode_command(Command::kOpen));
-    client->write(p2os::encode_command(Command::kEnable, 1));
-  }
-};
+using testing::await;
+using testing::Served;
+using testing::types_for;
 
 TEST(P2osServer, SyncOutOfOrderIsNotAnswered) {
   Served s;
@@ -394,26 +349,15 @@ TEST(P2osServer, SetoRestartsThePositionCounters) {
   EXPECT_EQ(sip.th_pos, 0);
 }
 
-// Reads packets for `span`, returning their type bytes in order.
-std::vector<std::uint8_t> types_for(ByteStream& link, p2os::PacketDecoder& d,
-                                    std::chrono::milliseconds span) {
-  std::vector<std::uint8_t> types;
-  const auto end = std::chrono::steady_clock::now() + span;
-  std::uint8_t buf[512];
-  while (std::chrono::steady_clock::now() < end) {
-    d.feed({buf, link.read(buf, 10ms)});
-    while (auto p = d.next()) types.push_back(p->type());
-  }
-  return types;
-}
-
 // The connection of Player's and ROS's p2os as they send it: SYNC0 resent before the first
 // echo was read (so one extra echo of each comes back and a second SYNC1 follows), a bare
 // OPEN, PULSE, SONAR 0, accelerations (one negative, 0x1B), the PID gains ROTKP..TRANSKI,
 // BUMPSTALL, SONAR 1, SETO without a value; then commands ARIA or others send: JOYDRIVE,
-// SOUNDTOG, ENCODER and IOREQUEST packet requests, HOSTBAUD, a string command (TTY2, 0x2B),
-// and ARIA's "WMS2\r" radio-modem bytes before the first SYNC. None may break the sync or the
-// stream; the motion commands after them must still drive.
+// SOUNDTOG, ENCODER 1 and IOREQUEST 2 packet requests, HOSTBAUD, a string command (TTY2,
+// 0x2B), and ARIA's "WMS2\r" radio-modem bytes before the first SYNC. None may break the sync
+// or the stream; the motion commands after them must still drive. ENCODER 1 brings one encoder
+// packet after the next SIP, IOREQUEST 2 an IO packet after every SIP (both used to be ignored:
+// an ARIA client asking for them waited in vain; p2os_server_streams_test.cc has the rest).
 TEST(P2osServer, PlayerAndAriaConnectSequencesAreServed) {
   Served s;
   const auto send = [&](std::uint8_t cmd, std::optional<int> arg = std::nullopt) {
@@ -446,8 +390,8 @@ TEST(P2osServer, PlayerAndAriaConnectSequencesAreServed) {
   s.client->write(p2os::frame(std::vector<std::uint8_t>{7, p2os::kArgPositive}));  // SETO
   send(47, 1);                                                                     // JOYDRIVE
   send(92, 0);                                                                     // SOUNDTOG
-  send(19, 1);                                                                     // ENCODER
-  send(40, 2);                                                                     // IOREQUEST
+  send(19, 1);                                                                     // ENCODER 1
+  send(40, 2);                                                                     // IOREQUEST 2
   send(50, 0);                                                                     // HOSTBAUD 9600
   s.client->write(p2os::encode_command(static_cast<Command>(42), std::string_view("hello")));
   send(4, 1);  // ENABLE
@@ -455,6 +399,21 @@ TEST(P2osServer, PlayerAndAriaConnectSequencesAreServed) {
   send(21, -10);
   types = types_for(*s.client, s.decoder, 600ms);
   EXPECT_GE(std::count(types.begin(), types.end(), p2os::kSipMoving), 3);
+  // The one encoder packet ENCODER 1 asked for, right behind a SIP.
+  EXPECT_EQ(std::count(types.begin(), types.end(), p2os::kEncoderPacket), 1);
+  EXPECT_EQ(s.server->stats().encoder_packets, 1u);
+  const auto encoder = std::find(types.begin(), types.end(), p2os::kEncoderPacket);
+  ASSERT_NE(encoder, types.end());
+  ASSERT_NE(encoder, types.begin());
+  EXPECT_TRUE(p2os::is_sip(encoder[-1]));
+  // From the next SIP on (both requests long read by then), an IO packet behind every SIP.
+  int sips_after = 0;
+  for (auto it = encoder; it + 1 < types.end(); ++it) {
+    if (!p2os::is_sip(*it)) continue;
+    ++sips_after;
+    EXPECT_EQ(it[1], p2os::kIoPacket) << "after SIP " << sips_after;
+  }
+  EXPECT_GE(sips_after, 3);
   EXPECT_NEAR(s.body.current().v_mps, 0.2, 1e-12);
   EXPECT_NEAR(s.body.current().w_radps, -10 * M_PI / 180, 1e-12);
   EXPECT_EQ(s.server->stats().syncs, 1u);

@@ -1,4 +1,4 @@
-// SIP, SYNC2 and CONFIG packet bodies: little-endian fields read with bounds checks.
+// SIP, SYNC2, CONFIG, encoder and IO packet bodies: little-endian fields read with bounds checks.
 #include "cogmap/hw/p2os_sip.h"
 
 #include "cogmap/hw/p2os_packet.h"
@@ -13,7 +13,8 @@ namespace {
 // Offsets count from the type byte (offset 0), as Packet::body holds it.
 class Reader {
  public:
-  Reader(std::span<const std::uint8_t> body, std::size_t start) : body_(body), pos_(start) {}
+  Reader(std::span<const std::uint8_t> body, std::size_t start, const char* packet = "SIP")
+      : body_(body), pos_(start), packet_(packet) {}
   std::size_t remaining() const { return body_.size() - pos_; }
   std::size_t pos() const { return pos_; }
   std::uint8_t u8(const char* field) {
@@ -27,18 +28,27 @@ class Reader {
     return v;
   }
   std::int16_t i16(const char* field) { return static_cast<std::int16_t>(u16(field)); }
+  std::int32_t i32(const char* field) {
+    need(4, field);
+    std::uint32_t v = 0;
+    for (int i = 3; i >= 0; --i) v = (v << 8) | body_[pos_ + static_cast<std::size_t>(i)];
+    pos_ += 4;
+    return static_cast<std::int32_t>(v);
+  }
   std::span<const std::uint8_t> rest() { return body_.subspan(pos_); }
 
  private:
   void need(std::size_t n, const char* field) {
     if (remaining() < n) {
-      throw DecodeError("SIP too short: field " + std::string(field) + " at body offset " +
-                        std::to_string(pos_) + " needs " + std::to_string(n) + " bytes, " +
-                        std::to_string(remaining()) + " left of " + std::to_string(body_.size()));
+      throw DecodeError(std::string(packet_) + " too short: field " + std::string(field) +
+                        " at body offset " + std::to_string(pos_) + " needs " + std::to_string(n) +
+                        " bytes, " + std::to_string(remaining()) + " left of " +
+                        std::to_string(body_.size()));
     }
   }
   std::span<const std::uint8_t> body_;
   std::size_t pos_ = 0;
+  const char* packet_;  // named in errors
 };
 
 class Writer {
@@ -49,6 +59,10 @@ class Writer {
     out_.push_back(static_cast<std::uint8_t>(v >> 8));
   }
   void i16(std::int16_t v) { u16(static_cast<std::uint16_t>(v)); }
+  void i32(std::int32_t v) {
+    const auto bits = static_cast<std::uint32_t>(v);
+    for (int i = 0; i < 4; ++i) out_.push_back(static_cast<std::uint8_t>(bits >> (8 * i)));
+  }
   std::vector<std::uint8_t> take() { return std::move(out_); }
 
  private:
@@ -207,6 +221,52 @@ ConfigReply decode_config(std::span<const std::uint8_t> body) {
   if (strings.size() > 1) c.subtype = strings[1];
   if (strings.size() > 2) c.serial_number = strings[2];
   return c;
+}
+
+std::vector<std::uint8_t> encode_encoder_packet(const EncoderCounts& counts) {
+  Writer w;
+  w.u8(kEncoderPacket);
+  w.i32(counts.left);
+  w.i32(counts.right);
+  return w.take();
+}
+
+EncoderCounts decode_encoder_packet(std::span<const std::uint8_t> body) {
+  if (body.empty() || body[0] != kEncoderPacket) throw DecodeError("not an encoder packet");
+  Reader r(body, 1, "encoder packet");
+  EncoderCounts c;
+  c.left = r.i32("LEFT ENCODER");
+  c.right = r.i32("RIGHT ENCODER");
+  return c;
+}
+
+std::vector<std::uint8_t> encode_io_packet(const IoReport& report) {
+  if (report.digital_in.size() > 255 || report.digital_out.size() > 255 ||
+      report.analog.size() > 255) {
+    throw std::invalid_argument("IO packet: a list of more than 255 entries has no count byte");
+  }
+  Writer w;
+  w.u8(kIoPacket);
+  w.u8(static_cast<std::uint8_t>(report.digital_in.size()));
+  for (const std::uint8_t b : report.digital_in) w.u8(b);
+  w.u8(static_cast<std::uint8_t>(report.digital_out.size()));
+  for (const std::uint8_t b : report.digital_out) w.u8(b);
+  w.u8(static_cast<std::uint8_t>(report.analog.size()));
+  for (const std::uint16_t v : report.analog) w.u16(v);
+  return w.take();
+}
+
+IoReport decode_io_packet(std::span<const std::uint8_t> body) {
+  if (body.empty() || body[0] != kIoPacket) throw DecodeError("not an IO packet");
+  Reader r(body, 1, "IO packet");
+  IoReport io;
+  io.digital_in.resize(r.u8("DIGIN COUNT"));
+  for (std::uint8_t& b : io.digital_in) b = r.u8("DIGIN");
+  io.digital_out.resize(r.u8("DIGOUT COUNT"));
+  for (std::uint8_t& b : io.digital_out) b = r.u8("DIGOUT");
+  io.analog.resize(r.u8("ANALOG COUNT"));
+  for (std::uint16_t& v : io.analog) v = r.u16("ANALOG");
+  return io;
 }
 
 std::optional<ConversionFactors> conversion_for_subclass(const std::string& subclass) {

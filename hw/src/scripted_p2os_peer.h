@@ -80,6 +80,7 @@ class ScriptedPeer {
   }
   std::uint64_t sips_sent() const { return sips_; }
   int opens() const { return opens_; }
+  int sync0s() const { return sync0s_; }  ///< SYNC0s received while closed
 
  private:
   void send(const Bytes& bytes) {
@@ -111,6 +112,7 @@ class ScriptedPeer {
           const std::uint8_t cmd = p->type();
           if (!open) {
             if (cmd == 0 && p->body.size() == 1) {
+              ++sync0s_;
               reply(p2os::encode_command(p2os::Command::kSync0));
               step = 1;
             } else if (step == 1 && cmd == 1 && p->body.size() == 1) {
@@ -161,6 +163,7 @@ class ScriptedPeer {
   std::atomic<bool> stop_{false};
   std::atomic<std::uint64_t> sips_{0};
   std::atomic<int> opens_{0};
+  std::atomic<int> sync0s_{0};
   std::thread thread_;
 };
 

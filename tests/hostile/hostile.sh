@@ -364,7 +364,7 @@ PY
     drive_handshake_silent)  # a robot that never answers is a failed run, not bad input
       tcp_peer "$d/port" silent
       cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 3 --out "$d/run"); want_rc=1
-      want_text="last: no reply to SYNC0 within 500 ms"; limit_s=6
+      want_text="last: no reply to SYNC0 within 1000 ms"; limit_s=6
       check() { kill "$peer" 2>/dev/null; [[ $text != *"do not decode"* ]]; } ;;
     drive_sips_never_parse)  # SIPs with valid checksums but an impossible layout: was exit 1
       tcp_peer "$d/port" bad_sips

@@ -44,10 +44,12 @@ enum class Command : std::uint8_t {
   kHead = 12,
   kDHead = 13,
   kConfig = 18,
+  kEncoder = 19,  ///< int: 0 stop, 1 one ENCODERpac, 2 one per SIP (as ARIA sends it)
   kRVel = 21,
   kSonar = 28,
   kStop = 29,
   kVel2 = 32,
+  kIoRequest = 40,   ///< int: 0 stop, 1 one IOpac, 2 one per SIP (as ARIA sends it)
   kSonarCycle = 48,  ///< int, 2-120 ms per sonar disc (ARCOS)
   kHostBaud = 50,
   kEStop = 55,
@@ -62,6 +64,8 @@ inline constexpr std::uint8_t kArgString = 0x2B;    ///< then a length byte and 
 inline constexpr std::uint8_t kSipStopped = 0x32;
 inline constexpr std::uint8_t kSipMoving = 0x33;
 inline constexpr std::uint8_t kConfigReply = 0x20;
+inline constexpr std::uint8_t kEncoderPacket = 0x90;  ///< ENCODERpac, the reply to ENCODER
+inline constexpr std::uint8_t kIoPacket = 0xF0;       ///< IOpac, the reply to IOREQUEST
 inline constexpr std::uint8_t kResetPacket = 0xFF;
 
 /// Checksum of a packet body (type byte up to, not including, the checksum): big-endian 16-bit

@@ -30,14 +30,25 @@ enum class FrameClock {
   kSipCount,  ///< sip_period_s per SIP received (a server running faster than real time)
 };
 
-/// Timeouts and clocks of P2osRobot; defaults suit a real P2-AT (P2AT.md "Connection").
+/// Timeouts and clocks of P2osRobot; defaults suit a real P2-AT (P2AT.md "Connection"). The
+/// handshake's limits follow ARIA's ArRobot::asyncConnectHandler (docs/robot-driver.md,
+/// "Handshake timings"), so a robot or bridge that ARIA connects to connects here too.
 struct P2osRobotOptions {
-  std::chrono::milliseconds sync_reply_timeout{500};  ///< wait per SYNC echo
-  int sync_attempts = 8;                              ///< SYNC0-2 rounds before giving up
+  /// Wait per SYNC echo; ARIA waits 1 s for each (receivePacket(1000)). A slow link (a radio
+  /// modem, a network-serial bridge) answering after 500 ms never connected.
+  std::chrono::milliseconds sync_reply_timeout{1000};
+  /// SYNC0-2 rounds that may end without a complete exchange; ARIA gives up when more than 10
+  /// SYNCs went unanswered.
+  int sync_attempts = 11;
+  /// Rounds while nothing at all has come back (no packet framed, only silence or noise);
+  /// ARIA gives up after 6 unanswered SYNCs when none was ever answered (retries 5), so a
+  /// port with no robot fails in about 6 s.
+  int silent_sync_attempts = 6;
   /// The whole handshake (every attempt) ends within this, whatever the peer sends: a peer
-  /// echoing the wrong packet type forever once kept `drive` waiting with no end. 15 s covers
-  /// 8 silent attempts at 3 x 500 ms with a margin; `drive` lowers it to --duration.
-  std::chrono::milliseconds handshake_timeout{15000};
+  /// echoing the wrong packet type forever once kept `drive` waiting with no end. ARIA's
+  /// blockingConnect "can take up to 30 seconds"; 11 rounds of three slow replies could
+  /// take 33 s. `drive` lowers it to --duration.
+  std::chrono::milliseconds handshake_timeout{30000};
   std::chrono::milliseconds keepalive_period{200};     ///< < 0.5 s (watchdog ~2 s, P2AT.md)
   std::chrono::milliseconds silence_timeout{2000};     ///< no SIP this long: reconnect
   std::chrono::milliseconds reconnect_give_up{30000};  ///< reconnecting longer: disconnected

@@ -1,7 +1,8 @@
 #pragma once
 /// The robot side of P2OS, for `cogmap serve` and tests: it answers SYNC0-2 as a P2-AT,
 /// obeys OPEN/CLOSE/ENABLE/SONAR/VEL/RVEL/VEL2/STOP/E_STOP, and streams a SIP every cycle
-/// built from the frames of the mapper::Robot it drives (the simulator, or a test model).
+/// built from the frames of the mapper::Robot it drives (the simulator, or a test model),
+/// followed by the encoder and IO packets a client asked for (ENCODER, IOREQUEST).
 /// hw does not depend on the simulator: the caller hands in any Robot.
 
 #include <atomic>
@@ -61,6 +62,8 @@ struct P2osServerStats {
   std::uint64_t client_timeouts = 0;  ///< open clients dropped after client_timeout
   std::uint64_t syncs = 0;            ///< completed handshakes
   std::uint64_t bad_bytes = 0;        ///< discarded by the decoder
+  std::uint64_t encoder_packets = 0;  ///< ENCODERpacs sent (ENCODER 1 or 2)
+  std::uint64_t io_packets = 0;       ///< IOpacs sent (IOREQUEST 1 or 2)
 };
 
 /// The robot side of one P2OS link; run() serves until stopped or the client hangs up.
@@ -84,8 +87,15 @@ class P2osServer {
   }
 
  private:
+  /// What ENCODER and IOREQUEST asked for: nothing, one packet after the next SIP, or one
+  /// after every SIP (arguments 0, 1, 2 and above).
+  enum class Stream { kOff, kOnce, kEverySip };
+  static Stream stream_request(std::optional<int> arg);
+
   void handle(const p2os::Packet& packet);
   void step_and_send_sip();
+  void count_wheel_travel(const mapper::Pose2& from, const mapper::Pose2& to);
+  void send_requested_packets();  // after a SIP: the encoder and IO packets asked for
   void set_motion(double v_mps, double w_radps);
 
   ByteStream& stream_;
@@ -102,6 +112,11 @@ class P2osServer {
   mapper::Pose2 origin_;  // body odometry at the last reset: the counters' zero
   mapper::Pose2 last_odometry_;
   bool have_odometry_ = false;
+  // Each side's wheel travel since power-up or a reset, mm: the encoders count it whether a
+  // client is open or not, and SETO does not clear it (it restarts the position counters).
+  double left_wheel_mm_ = 0.0, right_wheel_mm_ = 0.0;
+  Stream encoder_stream_ = Stream::kOff;
+  Stream io_stream_ = Stream::kOff;
   std::atomic<bool> reset_requested_{false};
   mutable std::mutex stats_mutex_;  // stats() is read from other threads while run() counts
   P2osServerStats stats_;

@@ -1,6 +1,7 @@
 #pragma once
 /// Robot-to-client P2OS packets: the standard SIP (server information packet), the SYNC
-/// replies, the CONFIG reply and the reset packet; and the per-model conversion factors.
+/// replies, the CONFIG reply, the encoder and IO packets and the reset packet; and the
+/// per-model conversion factors.
 
 #include <cstdint>
 #include <optional>
@@ -91,6 +92,31 @@ struct ConfigReply {
 /// Decodes what it safely can of a CONFIG reply; never throws for short bodies (strings missing
 /// are left empty).
 ConfigReply decode_config(std::span<const std::uint8_t> body);
+
+/// ENCODERpac (0x90), the reply to ENCODER (#19): each side's wheel encoder count, signed 32-bit
+/// little-endian, left then right, as ARIA's ArRobot::processEncoderPacket reads it.
+struct EncoderCounts {
+  std::int32_t left = 0;
+  std::int32_t right = 0;
+};
+/// Encodes an ENCODERpac body (type byte first).
+std::vector<std::uint8_t> encode_encoder_packet(const EncoderCounts& counts);
+/// Decodes an ENCODERpac body; throws DecodeError (naming the field) when it is too short.
+EncoderCounts decode_encoder_packet(std::span<const std::uint8_t> body);
+
+/// IOpac (0xF0), the reply to IOREQUEST (#40), as ARIA's ArRobot::processIOPacket reads it: a
+/// count and that many digital input bytes, a count and the digital output bytes, a count and
+/// that many analog readings (u16 little-endian, 10-bit A/D).
+struct IoReport {
+  std::vector<std::uint8_t> digital_in;
+  std::vector<std::uint8_t> digital_out;
+  std::vector<std::uint16_t> analog;
+};
+/// Encodes an IOpac body (type byte first). Throws std::invalid_argument for more than 255
+/// entries in a list.
+std::vector<std::uint8_t> encode_io_packet(const IoReport& report);
+/// Decodes an IOpac body; throws DecodeError (naming the field) when a list runs past the end.
+IoReport decode_io_packet(std::span<const std::uint8_t> body);
 
 /// Raw-unit to SI conversion for one robot subclass (P2AT.md "Conversion").
 struct ConversionFactors {
