@@ -253,6 +253,36 @@ TEST(P2osFailureKind, ReconnectionThatGetsOnlyNoiseIsBadBytes) {
   EXPECT_NE(failure.find("none formed a packet"), std::string::npos) << failure;
 }
 
+// A robot that falls silent mid-run: the reconnection gives up at reconnect_give_up, not a
+// whole handshake_timeout later (a handshake started just before the give-up time used to run
+// to its own end: up to 30 s + 30 s with the defaults).
+TEST(P2osFailureKind, ReconnectionEndsAtItsGiveUpTime) {
+  auto [ours, theirs] = make_memory_pair();
+  std::atomic<LinkMode> mode{LinkMode::kPass};
+  PeerScript script;
+  script.sip = counting_sip;
+  ScriptedPeer peer(std::make_unique<MutableLink>(std::move(theirs), mode), script);
+  P2osRobotOptions o = quick_options();
+  o.silence_timeout = 300ms;
+  o.sync_reply_timeout = 500ms;
+  o.sync_attempts = o.silent_sync_attempts = 20;  // a silent handshake: 10 s ...
+  o.handshake_timeout = 6000ms;                   // ... cut to 6 s by its own bound
+  o.reconnect_give_up = 1000ms;
+  o.frame_wait = 20000ms;  // the reconnection gives up first
+  P2osRobot robot(std::move(ours), o);
+  EXPECT_GE(frames_for(robot, 200ms).size(), 2u);
+  mode = LinkMode::kMute;
+  const auto muted = std::chrono::steady_clock::now();
+  while (robot.next_frame()) {
+  }
+  const auto took = std::chrono::steady_clock::now() - muted;
+  // silence_timeout + reconnect_give_up = 1.3 s; before, 0.3 + 6 s.
+  EXPECT_LT(took, 3000ms);
+  EXPECT_GE(took, 1200ms);
+  EXPECT_NE(robot.failure().find("reconnection gave up"), std::string::npos) << robot.failure();
+  EXPECT_EQ(robot.failure_kind(), P2osFailureKind::kLink) << robot.failure();
+}
+
 // The peer closes the connection mid-run: a lost link.
 TEST(P2osFailureKind, PeerClosingMidRunIsALink) {
   auto [ours, theirs] = make_memory_pair();

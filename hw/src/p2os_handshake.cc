@@ -31,11 +31,12 @@ std::string undecodable_since(const p2os::PacketDecoder& decoder, std::uint64_t 
 }
 }  // namespace
 
-bool P2osRobot::handshake() {
+bool P2osRobot::handshake(Clock::time_point deadline) {
   using p2os::Command;
   decoder_.clear();
   stall_guard_.reset();
-  const auto give_up = Clock::now() + options_.handshake_timeout;
+  const auto started = Clock::now();
+  const auto give_up = std::min(deadline, started + options_.handshake_timeout);
   int attempts = 0;
   std::string last_problem;  // why the latest attempt did not finish, for the failure message
   // A packet of any kind came back: a robot is there, perhaps slow or confused, and gets all
@@ -169,8 +170,7 @@ bool P2osRobot::handshake() {
     }
   }
   std::lock_guard lock(mutex_);
-  const auto spent = std::chrono::duration_cast<milliseconds>(
-      Clock::now() - (give_up - options_.handshake_timeout));
+  const auto spent = std::chrono::duration_cast<milliseconds>(Clock::now() - started);
   // Bad input when, since the link was (re)opened, only undecodable bytes came back (silence
   // aside): a robot that answered at all, even wrongly, or never sent a byte is a lost link.
   const bool bad_bytes = garbage_attempts_ > 0 && answered_attempts_ == 0;

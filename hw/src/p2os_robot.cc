@@ -168,7 +168,9 @@ void P2osRobot::io_loop() {
         if (stopping_) break;
       }
       if (reconnecting) {
-        if (handshake()) {
+        // Each handshake ends by the give-up time too: one started just before it would
+        // otherwise run its whole handshake_timeout past it.
+        if (handshake(reconnect_since + options_.reconnect_give_up)) {
           reconnecting = false;
           if (after_reset) {
             odometry_.rebase();  // a reset controller restarts its counters at zero
@@ -184,7 +186,7 @@ void P2osRobot::io_loop() {
             failure_.clear();
             failure_kind_ = P2osFailureKind::kNone;
           }
-        } else if (Clock::now() - reconnect_since > options_.reconnect_give_up) {
+        } else if (Clock::now() - reconnect_since >= options_.reconnect_give_up) {
           std::lock_guard lock(mutex_);  // failure_kind_ as the handshakes judged it
           failure_ = "reconnection gave up: " + failure_;
           break;

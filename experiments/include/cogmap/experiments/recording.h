@@ -1,6 +1,6 @@
 #pragma once
 /// Opens any recording a user may hold as a mapper::Robot that plays it back: a cogmap robot
-/// log (streamed), or a CARMEN log, a Player 2.x log or a ROS 1 bag (imported into memory).
+/// log (streamed), or a CARMEN log, a Player 2.x-3.x log or a ROS 1 bag (imported into memory).
 /// One place decides the format, so every reader of recordings accepts the same files.
 
 #include <filesystem>

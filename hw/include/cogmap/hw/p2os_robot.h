@@ -144,7 +144,10 @@ class P2osRobot final : public mapper::Robot {
 
  private:
   void io_loop();
-  bool handshake();  // on the I/O thread (or the constructor before it starts)
+  // On the I/O thread (or the constructor before it starts). Ends by `deadline` at the latest
+  // (a reconnection's give-up time) as well as by options_.handshake_timeout.
+  bool handshake(std::chrono::steady_clock::time_point deadline =
+                     std::chrono::steady_clock::time_point::max());
   void send(const std::vector<std::uint8_t>& packet);
   std::optional<p2os::Packet> read_packet(std::chrono::milliseconds timeout);
   void receive(std::chrono::milliseconds timeout);  // stream -> decoder, abandons cut packets
