@@ -3,9 +3,11 @@
 // CRLF, trailing spaces, C's number forms, epoch timestamps to the microsecond, long PARAM
 // blocks. Each case is exact synthetic text.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "cogmap/hw/log_import.h"
 #include "import_test_files.h"
@@ -229,6 +231,40 @@ TEST(CarmenImport, MalformedSonarNamesFileAndLine) {
                                "ODOM 0 0 0 0 0 0 1100000000.0 p2at 0.0\n"
                                "ODOM 0 0 0 0 0 0 11000x0000.1 p2at 0.1\n");
   EXPECT_EQ(error_of(r), "bad3.log:2: expected timestamp at field 8, got '11000x0000.1'");
+}
+
+// What a hostile or broken file gets (was and is; checked when foreign_log_fuzz was added): a
+// line of over 1 MiB is refused at that size (a 100 MB line is not buffered), a number that is
+// not finite or a double (nan, inf, 1e400) or holds a NUL is refused naming its field, and a
+// directory or a FIFO is refused before it is opened (a FIFO would wait for a writer).
+TEST(CarmenImport, HostileFilesAreRefusedNamingFileAndLine) {
+  const std::string overlong = kOdom1 + "SONAR 0.2 1 " + std::string((1u << 20) + 1, '1');
+  EXPECT_EQ(error_of(write_log("long.log", overlong)),
+            "long.log:2: line longer than 1048576 bytes: not a text log");
+  const std::pair<std::string, std::string> numbers[] = {
+      {"nan", "nan"}, {"-inf", "-inf"}, {"1e400", "1e400"}, {std::string("1\0.5", 4), "1\\x00.5"}};
+  for (const auto& [v, quoted] : numbers) {
+    EXPECT_EQ(error_of(write_log("n.log", kOdom1 + "ODOM " + v + " 0 0 0 0 0 1100000000.1 h 0\n")),
+              "n.log:2: expected x at field 2, got '" + quoted + "'");
+    EXPECT_EQ(error_of(write_log("s.log", kOdom1 + "SONAR 0.2 1 " + v +
+                                              " 0.147 0.136 1.570796 1100000000.05 h 0\n")),
+              "s.log:2: expected range at field 4, got '" + quoted + "'");
+  }
+  EXPECT_EQ(error_of(write_log("c.log", kOdom1 + "SONAR 0.2 2147483648 1 1 1 1 h 0\n")),
+            "c.log:2: expected num_sonars (0..255) at field 3, got '2147483648'");
+  const fs::path dir = write_log("d.log", "").parent_path() / "a_directory.log";
+  fs::create_directories(dir);
+  const fs::path fifo = dir.parent_path() / "a_fifo.log";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  for (const fs::path& p : {dir, fifo}) {
+    const std::string want =
+        p.filename().string() + ": not a regular file (a device, pipe or directory)";
+    EXPECT_EQ(error_of(p), want);
+    EXPECT_EQ(testing::import_error([](const fs::path& f) { return detect_log_format(f); }, p),
+              want);
+    EXPECT_EQ(testing::import_error([](const fs::path& f) { return import_player_log(f); }, p),
+              want);
+  }
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ struct SonarDevice {
   std::size_t geometry_line = 0;           // 0: none
   bool has_ranges = false;
   bool used = false;
+  std::string name;        // "robot:interface:index"
   std::size_t offset = 0;  // its first transducer's index in the joined geometry
   // Rangers only: the first ranges line, the most ranges in one line, the first config.
   std::size_t ranges_line = 0;
@@ -62,6 +63,10 @@ RangerKind kind_of(const SonarDevice& r) {
 }
 
 constexpr const char* kPlayer2 = "cogmap reads the files of Player 2.x and 3.x's writelog";
+
+// The most transducers a geometry may join: a cogmap log's header holds no more (`sonars=N`,
+// robot_log.cc), nor does CARMEN's num_sonars or one Player sonar array's count.
+constexpr std::size_t kMaxTransducers = 255;
 
 // Reads the common header of a data line; false for a comment or blank line. Refuses Player 1.x.
 bool read_header(detail::Fields& f, bool comment) {
@@ -225,9 +230,11 @@ Devices list_devices(const std::filesystem::path& path) {
   std::vector<SonarDevice*> used;
   for (auto& [dev, s] : d.sonars) {
     if (s.has_ranges && of_robot(dev)) used.push_back(&s);
+    s.name = name_of(dev, "sonar");
   }
   for (auto& [dev, r] : d.rangers) {
     if (r.has_ranges && of_robot(dev) && kind_of(r) == RangerKind::kSonar) used.push_back(&r);
+    r.name = name_of(dev, "ranger");
   }
   if (used.size() > 1) {
     std::vector<SonarDevice*> placed;
@@ -254,6 +261,14 @@ Devices list_devices(const std::filesystem::path& path) {
     s->used = true;
     s->offset = offset;
     offset += s->mounts.size();
+    // Before: imported (a ranger of 256 element poses, two arrays of 200), and the export of
+    // the import was a cogmap log its own reader refused ("expected sonars=N (integer 0..255)").
+    if (offset > kMaxTransducers) {
+      throw LogError(path.string() + ":" + std::to_string(s->geometry_line) + ": the geometry of " +
+                     s->name + " has " + std::to_string(s->mounts.size()) + " poses, " +
+                     std::to_string(offset) + " sonar transducers in all: cogmap reads at most " +
+                     std::to_string(kMaxTransducers) + " (as many as a cogmap log holds)");
+    }
     if (!d.config && s->config && s->config->max_range_m > 0.0) {
       d.config = s->config;
       d.config_line = s->config_line;

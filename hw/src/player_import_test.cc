@@ -106,6 +106,26 @@ TEST(PlayerImport, TwoSonarArraysAreJoined) {
   EXPECT_EQ(log.frames[1].sonar[0].range_m, 0.8);
 }
 
+// Before: two arrays of 200 and 56 were joined into 256 transducers, more than a cogmap log
+// holds (write_cogmap_log of the import wrote a log its reader refused).
+TEST(PlayerImport, JoinedArraysOfMoreThan255AreRefused) {
+  const auto geometry = [](const std::string& index, int poses) {
+    std::string line =
+        "1199999999.990 16777343 6665 sonar " + index + " 004 001 " + std::to_string(poses);
+    for (int i = 0; i < poses; ++i) line += " +00.100 +00.000 +0.0000";
+    return line + " \n";
+  };
+  const std::string data = position("1200000000.000", "00", "+00.000") +
+                           ranges("1200000000.000", "00", "1 1.5") +
+                           ranges("1200000000.000", "01", "1 0.8");
+  EXPECT_EQ(error_of(write_log("p.log", kHeader + geometry("00", 200) + geometry("01", 56) + data)),
+            "p.log:10: the geometry of 6665:sonar:1 has 56 poses, 256 sonar transducers in all: "
+            "cogmap reads at most 255 (as many as a cogmap log holds)");
+  const ImportedLog log = import_player_log(
+      write_log("q.log", kHeader + geometry("00", 200) + geometry("01", 55) + data));
+  EXPECT_EQ(log.geometry.sonars.size(), 255u);
+}
+
 // A second array with no geometry cannot be placed: it is skipped, not read with wrong mounts.
 TEST(PlayerImport, SonarArrayWithoutGeometryBesideOneWithIsSkipped) {
   const std::string text = kHeader + kSonarGeom + position("1200000000.000", "00", "+00.000") +

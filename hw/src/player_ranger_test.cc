@@ -175,6 +175,50 @@ TEST(PlayerRanger, LaserOnlyLogSaysWhatItHolds) {
             "element pose, up to 3 ranges a line: a laser, not a sonar ring)");
 }
 
+// A geometry of `poses` element poses at the device origin, their sizes left out.
+std::string ring_geometry(int poses) {
+  std::string line =
+      "1300000000.000 16777343 6665 ranger 00 004 001 0 0 0 0 0 0 0 0 0 " + std::to_string(poses);
+  for (int i = 0; i < poses; ++i) line += " 0 0 0 0 0 " + std::to_string(i % 6);
+  return line + " 0000 \n";
+}
+
+// Before: a ranger of 256 element poses imported as 256 transducers, and write_cogmap_log of
+// the import wrote a log its own reader refused ("expected sonars=N (integer 0..255)"): found
+// by foreign_log_fuzz, which reads back what it imports.
+TEST(PlayerRanger, MoreThan255ElementPosesAreRefused) {
+  const std::string data = position("1300000000.100", "+00.000") +
+                           ranger("1300000000.100", "00", "001", "0002 1.000 2.000");
+  EXPECT_EQ(error_of(write_log("p.log", kHeader + ring_geometry(256) + data)),
+            "p.log:9: the geometry of 6665:ranger:0 has 256 poses, 256 sonar transducers in all: "
+            "cogmap reads at most 255 (as many as a cogmap log holds)");
+  const ImportedLog log =
+      import_player_log(write_log("q.log", kHeader + ring_geometry(255) + data));
+  EXPECT_EQ(log.geometry.sonars.size(), 255u);
+  const fs::path exported = write_log("q.cogmap.log", "");
+  write_cogmap_log(exported, log);
+  EXPECT_EQ(LogReader(exported).geometry().sonars.size(), 255u);
+}
+
+// Counts beyond any ranger (2^31, 2^64) and numbers that are not finite doubles are refused on
+// their own field, before anything is sized by them (was and is).
+TEST(PlayerRanger, HugeCountsAndNonFiniteNumbersNameTheirField) {
+  EXPECT_EQ(error_of(write_log(
+                "c.log", kHeader + ranger("1300000000.1", "00", "001", "2147483648 1.0 1.0"))),
+            "c.log:9: expected ranges_count (0..65535) at field 8, got '2147483648'");
+  EXPECT_EQ(error_of(write_log("g.log", kHeader + "1300000000.000 16777343 6665 ranger 00 004 001 "
+                                                  "0 0 0 0 0 0 0 0 0 18446744073709551616 0\n")),
+            "g.log:9: expected ranger element_poses_count (0..65535) at field 17, got "
+            "'18446744073709551616'");
+  for (const std::string v : {"nan", "inf", "-1e400"}) {
+    EXPECT_EQ(error_of(write_log("r.log", kHeader + kSonarGeom + position("1300000000.1", "+0") +
+                                              ranger("1300000000.1", "00", "001", "0001 " + v))),
+              "r.log:11: expected range at field 9, got '" + v + "'");
+    EXPECT_EQ(error_of(write_log("k.log", kHeader + kSonarGeom + position("1300000000.1", v))),
+              "k.log:10: expected px at field 8, got '" + v + "'");
+  }
+}
+
 // Lines of the types read stay strict: the file, the line and the field.
 TEST(PlayerRanger, MalformedLinesNameFileAndLine) {
   // A geometry cut short (the log cut mid-line): 4 element poses announced, 1 written.

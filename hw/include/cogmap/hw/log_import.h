@@ -44,7 +44,8 @@ ImportedLog import_carmen_log(const std::filesystem::path& path);
 /// is emitted for every sonar ranges line, with the latest position; position lines before
 /// the first sonar line or between two sonar lines make frames without readings. Lines of
 /// other devices are counted and skipped. Throws LogError for a malformed line of those types,
-/// an array whose geometry changes, a sonar ranger that never logs its geometry, a log without
+/// an array whose geometry changes, sonar arrays of more than 255 transducers in all (a cogmap
+/// log's most), a sonar ranger that never logs its geometry, a log without
 /// sonar readings (naming every device and why it was skipped), and Player 1.x files.
 ImportedLog import_player_log(const std::filesystem::path& path);
 
