@@ -51,7 +51,13 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
     detail::Fields f(path, line_no, std::move(tokens));
     if (kind == "ODOM") {
       // ODOM x y theta tv rv accel timestamp host logger_timestamp
-      if (f.size() != 10) f.fail("ODOM x y theta tv rv accel timestamp host logger_ts", f.size());
+      if (f.size() < 10) f.fail("ODOM x y theta tv rv accel timestamp host logger_ts", f.size());
+      if (f.size() > 10) {
+        f.fail_line("ODOM has " + std::to_string(f.size() - 1) +
+                    " fields where CARMEN writes 9 (x y theta tv rv accel timestamp host "
+                    "logger_ts): field 11 '" +
+                    detail::printable(f.at(10)) + "' is one too many");
+      }
       mapper::SensorFrame frame;
       frame.odometry = {f.number(1, "x"), f.number(2, "y"),
                         mapper::wrap_angle_rad(f.number(3, "theta"))};

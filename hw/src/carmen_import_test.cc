@@ -250,6 +250,10 @@ TEST(CarmenImport, HostileFilesAreRefusedNamingFileAndLine) {
                                               " 0.147 0.136 1.570796 1100000000.05 h 0\n")),
               "s.log:2: expected range at field 4, got '" + quoted + "'");
   }
+  // A field too many was "at field 12, got 'end of line'".
+  EXPECT_EQ(error_of(write_log("x.log", kOdom1 + "ODOM 1 0 0 0 0 0 1100000000.1 h 0 extra\n")),
+            "x.log:2: ODOM has 10 fields where CARMEN writes 9 (x y theta tv rv accel timestamp "
+            "host logger_ts): field 11 'extra' is one too many");
   EXPECT_EQ(error_of(write_log("c.log", kOdom1 + "SONAR 0.2 2147483648 1 1 1 1 h 0\n")),
             "c.log:2: expected num_sonars (0..255) at field 3, got '2147483648'");
   const fs::path dir = write_log("d.log", "").parent_path() / "a_directory.log";
