@@ -171,7 +171,7 @@ int drive(const DriveArgs& args) {
   robot_options.log = [](const std::string& m) { std::cerr << "cogmap drive: " << m << "\n"; };
   if (args.sip_clock) robot_options.clock = hw::FrameClock::kSipCount;
   // --duration bounds the handshake too: a peer that never completes SYNC0-2 cannot hold a
-  // 5 s drive for the default 15 s.
+  // 5 s drive for the default 30 s.
   const auto duration_ms = std::chrono::milliseconds(
       static_cast<std::int64_t>(std::ceil(std::min(experiment.duration_s, 1e6) * 1000.0)));
   robot_options.handshake_timeout = std::min(robot_options.handshake_timeout, duration_ms);

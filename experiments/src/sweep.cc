@@ -87,11 +87,14 @@ std::string set_text(const YAML::Node& node, bool top) {
     const bool block = node.Style() == YAML::EmitterStyle::Block;
     return block && top ? literal_block(text) : double_quoted(text);
   }
+  // With an explicit tag the tag says what it is; quoted, the text cannot be read as YAML of
+  // its own ('#x' a comment, 'a: b' a mapping) whatever the tag.
+  if (!prefix.empty()) return prefix + double_quoted(text);
   // Plain: as written, where it cannot read back as anything else.
   const bool risky = text.empty() || text.find('\n') != std::string::npos ||
                      text.starts_with("---") || text.starts_with("...") ||
                      (!top && text.find_first_of(",[]{}:#") != std::string::npos);
-  return prefix + (risky ? double_quoted(text) : text);
+  return risky ? double_quoted(text) : text;
 }
 
 std::size_t parse_count(const std::string& text, const std::string& whole) {

@@ -138,7 +138,8 @@ TEST(Sweep, SetTextsReadBackAsTheSweepWroteThem) {
   const fs::path file = write_temp(
       "q.sweep.yaml",
       "base: b.yaml\nseeds: [1]\nvary:\n"
-      "  name: ['007', \"x y\", 'a: b', '#x', \"it's \\\"q\\\"\", plain words, !!str 12]\n"
+      "  name: ['007', \"x y\", 'a: b', '#x', \"it's \\\"q\\\"\", plain words, !!str 12,\n"
+      "         !!str '#y', !!str 'c: d']\n"
       "  duration_s: [55, '0.5', 0x10]\n"
       "  output.figures: [true, 'false', yes]\n"
       "  controller.waypoints: [[[1, '2']], [[3, 4]]]\n"
@@ -147,11 +148,12 @@ TEST(Sweep, SetTextsReadBackAsTheSweepWroteThem) {
   const SweepSpec s = load_sweep(file);
   ASSERT_EQ(s.vary.size(), 5u);
   EXPECT_EQ(s.vary[0].values, (std::vector<std::string>{"007", "x y", "a: b", "#x", "it's \"q\"",
-                                                        "plain words", "12"}));
-  EXPECT_EQ(
-      s.vary[0].set_texts,
-      (std::vector<std::string>{"\"007\"", "\"x y\"", "\"a: b\"", "\"#x\"", "\"it's \\\"q\\\"\"",
-                                "plain words", "!<tag:yaml.org,2002:str> 12"}));
+                                                        "plain words", "12", "#y", "c: d"}));
+  EXPECT_EQ(s.vary[0].set_texts,
+            (std::vector<std::string>{
+                "\"007\"", "\"x y\"", "\"a: b\"", "\"#x\"", "\"it's \\\"q\\\"\"", "plain words",
+                "!<tag:yaml.org,2002:str> \"12\"", "!<tag:yaml.org,2002:str> \"#y\"",
+                "!<tag:yaml.org,2002:str> \"c: d\""}));
   EXPECT_EQ(s.vary[1].set_texts, (std::vector<std::string>{"55", "\"0.5\"", "0x10"}));
   EXPECT_EQ(s.vary[2].set_texts, (std::vector<std::string>{"true", "\"false\"", "yes"}));
   EXPECT_EQ(s.vary[3].set_texts, (std::vector<std::string>{"[[1, \"2\"]]", "[[3, 4]]"}));

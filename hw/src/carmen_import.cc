@@ -92,6 +92,12 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
         ranges.push_back(f.number(3 + static_cast<std::size_t>(i), "range"));
       }
       const detail::Stamp ts = f.stamp(f.size() - 3, "timestamp");
+      if (n == 0) {
+        // No reading to map: not "read", or a log of such lines says it read SONAR lines.
+        ++log.ignored_lines;
+        tally.skipped(kind, "no ranges");
+        continue;
+      }
       mapper::SensorFrame frame;
       if (rest == 3) {
         if (!odometry) {

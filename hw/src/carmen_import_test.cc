@@ -132,6 +132,19 @@ TEST(CarmenImport, LogWithoutSonarSaysWhatItHolds) {
             "skipped: more than 0.5 s after the latest ODOM)");
 }
 
+// Before: "lines: ODOM (1 read), SONAR (3 read)" for SONAR lines of num_sonars 0, which hold
+// nothing to map: they are skipped, and say why.
+TEST(CarmenImport, SonarLinesWithoutRangesAreSkipped) {
+  const std::string none = "SONAR 0.261799 0 1100000000.050000 p2at 0.051234\n";
+  EXPECT_EQ(error_of(write_log("z.log", kOdom1 + none + none + none)),
+            "z.log: no sonar readings (SONAR lines with ranges); lines: ODOM (1 read), SONAR (3 "
+            "skipped: no ranges)");
+  const ImportedLog log = import_carmen_log(write_log("r.log", kOdom1 + none + kSonar1));
+  ASSERT_EQ(log.frames.size(), 2u);
+  EXPECT_EQ(log.frames[1].sonar.size(), 3u);
+  EXPECT_EQ(log.ignored_lines, 1u);
+}
+
 // Every other message CARMEN writes is skipped and counted, wherever it comes (was and is).
 TEST(CarmenImport, OtherMessagesInterleavedAreSkipped) {
   const std::string text =

@@ -280,6 +280,8 @@ TEST(P2osFailureKind, ReconnectionEndsAtItsGiveUpTime) {
   EXPECT_LT(took, 3000ms);
   EXPECT_GE(took, 1200ms);
   EXPECT_NE(robot.failure().find("reconnection gave up"), std::string::npos) << robot.failure();
+  EXPECT_NE(robot.failure().find("ended at the reconnection's give-up time"), std::string::npos)
+      << robot.failure();
   EXPECT_EQ(robot.failure_kind(), P2osFailureKind::kLink) << robot.failure();
 }
 

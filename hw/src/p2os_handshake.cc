@@ -170,14 +170,19 @@ bool P2osRobot::handshake(Clock::time_point deadline) {
     }
   }
   std::lock_guard lock(mutex_);
+  // A reconnection whose give-up time had already come (no attempt made): the failure of its
+  // last handshake stands, with its reasons.
+  if (attempts == 0 && !failure_.empty()) return false;
   const auto spent = std::chrono::duration_cast<milliseconds>(Clock::now() - started);
+  const bool cut_by_deadline = deadline < started + options_.handshake_timeout;
   // Bad input when, since the link was (re)opened, only undecodable bytes came back (silence
   // aside): a robot that answered at all, even wrongly, or never sent a byte is a lost link.
   const bool bad_bytes = garbage_attempts_ > 0 && answered_attempts_ == 0;
   failure_kind_ = bad_bytes ? P2osFailureKind::kBadBytes : P2osFailureKind::kLink;
   if (bad_bytes) last_problem = garbage_problem_;  // the offsets, not a silent last attempt
   failure_ = "no complete SYNC0-2 exchange in " + std::to_string(attempts) + " attempts, " +
-             std::to_string(spent.count()) + " ms (limits " +
+             std::to_string(spent.count()) + " ms (" +
+             (cut_by_deadline ? "ended at the reconnection's give-up time; " : "") + "limits " +
              std::to_string(options_.sync_attempts) + " attempts, " +
              std::to_string(options_.silent_sync_attempts) + " while nothing answers, " +
              std::to_string(options_.handshake_timeout.count()) + " ms)";

@@ -241,7 +241,11 @@ void P2osServer::handle(const p2os::Packet& packet) {
         const auto bits = static_cast<std::uint16_t>(*arg);
         const double left_mps = static_cast<std::int8_t>(bits >> 8) * 0.020;
         const double right_mps = static_cast<std::int8_t>(bits & 0xFF) * 0.020;
-        set_motion((left_mps + right_mps) / 2.0, (right_mps - left_mps) / options_.vel2_track_m);
+        // The wheels' difference over the track the firmware converts with (the model's
+        // odometry track, 2 / DiffConvFactor), as a skid-steer's wheel speeds relate to its
+        // turn: the same track the SIP's wheel speeds and the encoder counts use.
+        set_motion((left_mps + right_mps) / 2.0,
+                   (right_mps - left_mps) / body_.geometry().odometry_track_m);
       }
       break;
     case Command::kSetO:
@@ -340,7 +344,7 @@ void P2osServer::step_and_send_sip() {
   sip.y_pos = wrap15(options_.initial_y_count + rel.y_m * 1000.0 / factors_.distance_mm_per_unit);
   sip.th_pos =
       static_cast<std::int16_t>(std::llround(rel.theta_rad / factors_.angle_rad_per_unit) & 0xFFF);
-  const double half_track_m = options_.vel2_track_m / 2.0;
+  const double half_track_m = body_.geometry().odometry_track_m / 2.0;
   sip.l_vel = static_cast<std::int16_t>(std::lround((v_mps_ - w_radps_ * half_track_m) * 1000.0));
   sip.r_vel = static_cast<std::int16_t>(std::lround((v_mps_ + w_radps_ * half_track_m) * 1000.0));
   sip.battery = 130;

@@ -39,6 +39,10 @@ TEST(P2osServer, SipsCarryPoseSonarAndMotionFlags) {
   EXPECT_TRUE(sip.motors_enabled());
   EXPECT_EQ(sip.sonars.size(), 4u);
   EXPECT_EQ(*sip.rot_vel, -200);  // 0.1 deg/s units
+  // Wheel speeds over the odometry track (2 / 0.0034 = 588 mm), as the encoder counts: 0.4 m/s
+  // -/+ 20°/s x 0.294 m = 102.7 mm/s (over the physical 0.394 m it was 68.8: 1.49 x too few).
+  EXPECT_EQ(sip.l_vel, 503);
+  EXPECT_EQ(sip.r_vel, 297);
   EXPECT_GT(sip.x_pos, 0);
   EXPECT_NEAR(s.body.current().v_mps, 0.4, 1e-12);
   EXPECT_NEAR(s.body.current().w_radps, -20 * M_PI / 180, 1e-12);
@@ -52,12 +56,13 @@ TEST(P2osServer, Vel2SetsWheelSpeeds) {
   s.client->write(p2os::encode_command(Command::kVel2, (10 << 8) | 15));
   std::this_thread::sleep_for(150ms);
   EXPECT_NEAR(s.body.current().v_mps, 0.25, 1e-12);
-  EXPECT_NEAR(s.body.current().w_radps, 0.1 / 0.394, 1e-12);
+  // Over the p2at's odometry track, 2 / DiffConvFactor (0.0034): 100 mm/s x 0.0017 rad/mm.
+  EXPECT_NEAR(s.body.current().w_radps, 0.17, 1e-12);
   // Negative left wheel: -5 (0xFB) left, +5 right: turn in place.
   s.client->write(p2os::encode_command(Command::kVel2, (0xFB << 8) | 5));
   std::this_thread::sleep_for(150ms);
   EXPECT_NEAR(s.body.current().v_mps, 0.0, 1e-12);
-  EXPECT_NEAR(s.body.current().w_radps, 0.2 / 0.394, 1e-12);
+  EXPECT_NEAR(s.body.current().w_radps, 0.34, 1e-12);
 }
 
 TEST(P2osServer, MotionIgnoredUntilMotorsEnabled) {

@@ -4,6 +4,7 @@
 // which sonar arrays and sonar-like rangers and their mounts), the second makes the frames.
 // The ranger payloads (Player 3, Stage 4) are read in player_ranger.cc.
 #include <algorithm>
+#include <charconv>
 #include <map>
 #include <optional>
 #include <set>
@@ -178,6 +179,9 @@ struct Devices {
   std::map<Device, SonarDevice> sonars;
   std::map<Device, SonarDevice> rangers;
   std::optional<Device> odometry;
+  // The robot read (host, port): the odometry's, else that of the first device with readings.
+  std::optional<std::pair<std::string, long>> robot;
+  std::string sonar_read;  // "sonar:N", the robot's first `sonar` read; empty: none
   std::optional<detail::RangerConfig> config;  // the first used ranger's filled config
   std::size_t config_line = 0;
 };
@@ -215,9 +219,11 @@ Devices list_devices(const std::filesystem::path& path) {
   // The odometry: the lowest position2d address (drivers that wrap or estimate a pose — vfh,
   // nd, amcl — are usually given a higher index than the base device they require).
   if (!d.positions.empty()) d.odometry = *d.positions.begin();
-  // The sonar arrays of that robot with readings, then its sonar-like rangers; with several,
-  // those with a geometry (the others cannot be placed), else the lowest alone.
-  std::optional<std::pair<std::string, long>> robot;
+  // The sonar arrays of that robot with readings, else its sonar-like rangers: a ranger beside
+  // a sonar read is taken for the same ring (Player 3's sonartoranger beside p2os's sonar:0),
+  // whose echoes would otherwise count twice. With several, those with a geometry (the others
+  // cannot be placed), else the lowest alone.
+  auto& robot = d.robot;
   if (d.odometry) robot = {std::get<0>(*d.odometry), std::get<1>(*d.odometry)};
   for (const auto* devices : {&d.sonars, &d.rangers}) {
     for (const auto& [dev, s] : *devices) {
@@ -232,8 +238,11 @@ Devices list_devices(const std::filesystem::path& path) {
     if (s.has_ranges && of_robot(dev)) used.push_back(&s);
     s.name = name_of(dev, "sonar");
   }
+  const bool sonar_read = !used.empty();
   for (auto& [dev, r] : d.rangers) {
-    if (r.has_ranges && of_robot(dev) && kind_of(r) == RangerKind::kSonar) used.push_back(&r);
+    if (r.has_ranges && of_robot(dev) && kind_of(r) == RangerKind::kSonar && !sonar_read) {
+      used.push_back(&r);
+    }
     r.name = name_of(dev, "ranger");
   }
   if (used.size() > 1) {
@@ -244,6 +253,7 @@ Devices list_devices(const std::filesystem::path& path) {
     if (placed.empty()) placed.push_back(used.front());
     used = placed;
   }
+  if (sonar_read) d.sonar_read = used.front()->name.substr(used.front()->name.find(':') + 1);
   // A ranger without a geometry may be a laser as well as a sonar ring: beside sonar read
   // elsewhere it is skipped; alone it is the log's sonar, which cannot be read.
   for (const auto& [dev, r] : d.rangers) {
@@ -277,8 +287,8 @@ Devices list_devices(const std::filesystem::path& path) {
   return d;
 }
 
-// Why the lines of an unused ranger are skipped (empty: another robot's, or no ranges).
-std::string why_skipped(const SonarDevice& r) {
+// Why the lines of an unused ranger of the robot read are skipped (empty: no ranges).
+std::string why_skipped(const SonarDevice& r, const std::string& sonar_read) {
   if (!r.has_ranges) return "";
   switch (kind_of(r)) {
     case RangerKind::kLaser:
@@ -287,9 +297,28 @@ std::string why_skipped(const SonarDevice& r) {
     case RangerKind::kUnplaced:
       return "no geometry logged";
     case RangerKind::kSonar:
+      if (!sonar_read.empty()) {
+        return "the robot's " + sonar_read +
+               " is read; a ranger beside it is taken for the same ring (Player's sonartoranger)";
+      }
       break;
   }
   return "";
+}
+
+// Why a line is skipped when its device is another robot's (empty: the robot read's, or no
+// robot is read). Fields as written, unvalidated: skipped lines are not checked.
+std::string other_robot(const Devices& d, const detail::Fields& f) {
+  if (!d.robot) return "";
+  const std::string& port = f.at(2);
+  long value = -1;
+  const auto [end, ec] = std::from_chars(port.data(), port.data() + port.size(), value);
+  if (ec != std::errc() || end != port.data() + port.size()) return "";
+  const auto& [host, robot] = *d.robot;
+  if (f.at(1) == host && value == robot) return "";
+  // The host is named when it differs: writelog writes it as a number, as the robot's port.
+  return std::string("another robot's (") + (d.odometry ? "the odometry" : "the sonar read") +
+         " is " + (f.at(1) == host ? "" : host + ":") + std::to_string(robot) + "'s)";
 }
 
 SonarDevice* used_device(std::map<Device, SonarDevice>& devices, const Device& dev) {
@@ -360,13 +389,17 @@ ImportedLog import_player_log(const std::filesystem::path& path) {
       ++log.ignored_lines;  // other interfaces, other devices, other robots, other messages
       tally.skipped(line_device(f), why);
     };
+    if (const std::string other = other_robot(devices, f); !other.empty()) {
+      skip(other);
+      continue;
+    }
     const bool position = iface == "position2d" && device_of(f) == devices.odometry;
     SonarDevice* sonar = iface == "sonar" ? used_device(devices.sonars, device_of(f)) : nullptr;
     SonarDevice* ranger = nullptr;
     if (iface == "ranger") {
       ranger = used_device(devices.rangers, device_of(f));
       if (!ranger) {
-        skip(why_skipped(devices.rangers.at(device_of(f))));
+        skip(why_skipped(devices.rangers.at(device_of(f)), devices.sonar_read));
         continue;
       }
     }

@@ -241,7 +241,21 @@ TEST(PlayerImport, LogWithoutSonarSaysWhatItHolds) {
                             ranges("1200000000.000", "00", "2 1.5 1.6", "6666");
   EXPECT_EQ(error_of(write_log("q.log", other)),
             "q.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
-            "element); lines: 6665:position2d:0 (1 read), 6666:sonar:0 (1 skipped)");
+            "element); lines: 6665:position2d:0 (1 read), 6666:sonar:0 (1 skipped: another "
+            "robot's (the odometry is 6665's))");
+}
+
+// Before: "6666:position2d:0 (1 skipped), 6665:sonar:0 (1 skipped)", the lines of another robot
+// listed with no reason. Another port, or the same port on another host (named then).
+TEST(PlayerImport, AnotherRobotsLinesSayWhose) {
+  const std::string other_host = "1200000000.000 16777344 6665 sonar 00 001 001 2 1.500 1.600 \n";
+  const std::string text = kHeader + position("1200000000.000", "00", "+05.000", 0, "6666") +
+                           position("1200000000.000", "00", "+00.000") + other_host;
+  EXPECT_EQ(error_of(write_log("p.log", text)),
+            "p.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
+            "element); lines: 6666:position2d:0 (1 skipped: another robot's (the odometry is "
+            "6665's)), 6665:position2d:0 (1 read), 6665:sonar:0 (1 skipped: another robot's (the "
+            "odometry is 16777343:6665's))");
 }
 
 // Lines of the types read stay strict: the file, the line and the field.

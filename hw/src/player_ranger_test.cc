@@ -175,6 +175,50 @@ TEST(PlayerRanger, LaserOnlyLogSaysWhatItHolds) {
             "element pose, up to 3 ranges a line: a laser, not a sonar ring)");
 }
 
+// Before: 8 mounts and every echo twice. A Player 3 log can hold p2os's sonar:0 and a
+// sonartoranger ranger:0 of the same ring (one pose per element, so taken for sonar), and both
+// were joined. The robot's sonar is read; its rangers only when it has no sonar with readings.
+const std::string kP2osSonarGeom =
+    "1300000000.000 16777343 6665 sonar 00 004 001 4 +00.069 +00.136 +1.5710 +00.114 +00.119 "
+    "+0.8730 +00.148 +00.078 +0.5240 +00.166 +00.027 +0.1750 \n";
+
+TEST(PlayerRanger, RangerBesideSonarIsTheSameRing) {
+  const std::string text =
+      kHeader + kPositionGeom + kP2osSonarGeom + kSonarGeom + kSonarConfig +
+      position("1300000000.100", "+00.000") +
+      "1300000000.100 16777343 6665 sonar 00 001 001 4 1.500 2.250 5.000 0.000 \n" +
+      ranger("1300000000.100", "00", "001", "0004 1.500 2.250 5.000 0.000");
+  const ImportedLog log = import_player_log(write_log("p.log", text));
+  ASSERT_EQ(log.geometry.sonars.size(), 4u);
+  EXPECT_EQ(log.geometry.sonars[1].heading_rad, 0.873);
+  ASSERT_EQ(log.frames.size(), 1u);
+  EXPECT_EQ(log.frames[0].sonar.size(), 4u);
+  EXPECT_EQ(log.ignored_lines, 4u);  // position2d geometry; the ranger's geometry, config, ranges
+  // Why the ranger is skipped, in the listing of a log whose sonar lines hold no ranges.
+  const std::string empty = kHeader + kPositionGeom + kP2osSonarGeom + kSonarGeom +
+                            position("1300000000.100", "+00.000") +
+                            "1300000000.100 16777343 6665 sonar 00 001 001 0 \n" +
+                            ranger("1300000000.100", "00", "001", "0004 1.500 2.250 5.000 0.000");
+  EXPECT_EQ(error_of(write_log("q.log", empty)),
+            "q.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
+            "element); lines: 6665:position2d:0 (1 read, 1 skipped), 6665:sonar:0 (2 read), "
+            "6665:ranger:0 (2 skipped: the robot's sonar:0 is read; a ranger beside it is taken "
+            "for the same ring (Player's sonartoranger))");
+}
+
+// Before: "6666:ranger:0 (2 skipped)", with no reason.
+TEST(PlayerRanger, AnotherRobotsRangerSaysWhose) {
+  std::string geometry = kSonarGeom;
+  geometry.replace(geometry.find(" 6665 "), 6, " 6666 ");
+  const std::string text =
+      kHeader + kPositionGeom + geometry + position("1300000000.100", "+00.000") +
+      "1300000000.100 16777343 6666 ranger 00 001 001 0004 1.500 2.250 5.000 0.000 \n";
+  EXPECT_EQ(error_of(write_log("p.log", text)),
+            "p.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
+            "element); lines: 6665:position2d:0 (1 read, 1 skipped), 6666:ranger:0 (2 skipped: "
+            "another robot's (the odometry is 6665's))");
+}
+
 // A geometry of `poses` element poses at the device origin, their sizes left out.
 std::string ring_geometry(int poses) {
   std::string line =

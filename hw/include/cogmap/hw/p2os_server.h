@@ -38,8 +38,6 @@ struct P2osServerOptions {
   /// A client packet still incomplete this long after it began is abandoned, so the commands
   /// behind it are read (as P2osRobot does with the robot's packets).
   std::chrono::milliseconds partial_packet_timeout{500};
-  /// Track width used to turn VEL2 wheel speeds into a turn rate, metres.
-  double vel2_track_m = 0.394;
   /// Position counters at power-up: a controller left running holds any value (tests use
   /// values near 0x7FFF to exercise the wrap).
   std::uint16_t initial_x_count = 0;
