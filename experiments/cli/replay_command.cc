@@ -132,9 +132,9 @@ int replay(const ReplayArgs& args) {
 const CommandRegistrar kRegistrar{
     "replay", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<ReplayArgs>();
-      CLI::App* sub = app.add_subcommand(
-          "replay",
-          "Map a recorded log (cogmap, CARMEN, Player 2.x-3.x or ROS 1 bag) and write a run directory");
+      CLI::App* sub = app.add_subcommand("replay",
+                                         "Map a recorded log (cogmap, CARMEN, Player 2.x-3.x or "
+                                         "ROS 1 bag) and write a run directory");
       sub->add_option("log", args->log, "the log file")->required()->check(CLI::ExistingFile);
       sub->add_option("--out", args->out, "run directory (default runs/replay_<log name>)")
           ->check(non_empty());
