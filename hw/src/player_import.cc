@@ -209,7 +209,9 @@ Devices list_devices(const std::filesystem::path& path) {
       note_ranger(f, d.rangers[dev], type, subtype);
     } else {
       SonarDevice& s = d.sonars[dev];
-      if (type == 1 && subtype == 1) s.has_ranges = true;
+      // A ranges line with a count of 0 (`... 001 001 0`) reads nothing: such a device is no
+      // sonar read (a ranger beside it is then the ring).
+      if (type == 1 && subtype == 1 && f.size() > 8) s.has_ranges = true;
       if (is_geometry(type, subtype) && s.geometry_line == 0) {
         s.mounts = sonar_geometry(f);
         s.geometry_line = line_no;
@@ -391,6 +393,11 @@ ImportedLog import_player_log(const std::filesystem::path& path) {
     };
     if (const std::string other = other_robot(devices, f); !other.empty()) {
       skip(other);
+      continue;
+    }
+    if (iface == "sonar" && f.size() == 8 && f.integer(5, "message type", 0, 255) == 1 &&
+        f.integer(6, "message subtype", 0, 255) == 1 && f.integer(7, "range count", 0, 255) == 0) {
+      skip("no ranges");  // as CARMEN's SONAR lines of 0 ranges
       continue;
     }
     const bool position = iface == "position2d" && device_of(f) == devices.odometry;

@@ -194,16 +194,24 @@ TEST(PlayerRanger, RangerBesideSonarIsTheSameRing) {
   ASSERT_EQ(log.frames.size(), 1u);
   EXPECT_EQ(log.frames[0].sonar.size(), 4u);
   EXPECT_EQ(log.ignored_lines, 4u);  // position2d geometry; the ranger's geometry, config, ranges
-  // Why the ranger is skipped, in the listing of a log whose sonar lines hold no ranges.
-  const std::string empty = kHeader + kPositionGeom + kP2osSonarGeom + kSonarGeom +
+  // A sonar whose ranges lines hold no range (count 0) is no sonar read: the ranger beside it
+  // is the ring (before, the sonar "was read" and the log had no readings at all).
+  const std::string empty = kHeader + kPositionGeom + kP2osSonarGeom + kSonarGeom + kSonarConfig +
                             position("1300000000.100", "+00.000") +
                             "1300000000.100 16777343 6665 sonar 00 001 001 0 \n" +
                             ranger("1300000000.100", "00", "001", "0004 1.500 2.250 5.000 0.000");
-  EXPECT_EQ(error_of(write_log("q.log", empty)),
-            "q.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
-            "element); lines: 6665:position2d:0 (1 read, 1 skipped), 6665:sonar:0 (2 read), "
-            "6665:ranger:0 (2 skipped: the robot's sonar:0 is read; a ranger beside it is taken "
-            "for the same ring (Player's sonartoranger))");
+  const ImportedLog ranger_read = import_player_log(write_log("q.log", empty));
+  ASSERT_EQ(ranger_read.frames.size(), 1u);
+  EXPECT_EQ(ranger_read.frames[0].sonar.size(), 4u);
+  EXPECT_EQ(ranger_read.ignored_lines, 3u);  // position2d geometry; sonar geometry, empty ranges
+  // Only empty sonar lines: each is skipped for what it is.
+  const std::string only_empty = kHeader + kPositionGeom + kP2osSonarGeom +
+                                 position("1300000000.100", "+00.000") +
+                                 "1300000000.100 16777343 6665 sonar 00 001 001 0 \n";
+  EXPECT_EQ(error_of(write_log("e.log", only_empty)),
+            "e.log: no sonar readings (sonar ranges, or ranges of a ranger with one pose per "
+            "element); lines: 6665:position2d:0 (1 read, 1 skipped), 6665:sonar:0 (2 skipped: "
+            "no ranges)");
 }
 
 // Before: "6666:ranger:0 (2 skipped)", with no reason.
