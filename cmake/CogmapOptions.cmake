@@ -39,9 +39,6 @@ function(cogmap_add_test)
   target_include_directories(${ARG_NAME}
                              PRIVATE ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../tests/support)
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main)
-  # gtest.h costs ~1.1 s of parsing in every test file (130 of them); precompiled once per
-  # test program, the clean build of `scripts/test` is shorter (the 20-minute CI budget).
-  target_precompile_headers(${ARG_NAME} PRIVATE <gtest/gtest.h>)
   gtest_discover_tests(${ARG_NAME} DISCOVERY_TIMEOUT 60
                        PROPERTIES ENVIRONMENT "COGMAP_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
                                   ${ARG_PROPERTIES})
