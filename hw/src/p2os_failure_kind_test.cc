@@ -78,6 +78,22 @@ Bytes counting_sip(std::uint64_t n) {
   return sip_body(0x32, static_cast<std::uint16_t>(n), 0, 0, {{1, 1000}});
 }
 
+// That robot behind a link the test can cut (kMute) or garble later: `robot_end` goes to the
+// P2osRobot, `mode` breaks the link. Declared before the robot, so it outlives it.
+struct BreakableRobot {
+  std::atomic<LinkMode> mode{LinkMode::kPass};
+  std::unique_ptr<ByteStream> robot_end;
+  std::unique_ptr<ScriptedPeer> peer;
+  BreakableRobot() {
+    auto [ours, theirs] = make_memory_pair();
+    robot_end = std::move(ours);
+    PeerScript script;
+    script.sip = counting_sip;
+    peer = std::make_unique<ScriptedPeer>(std::make_unique<MutableLink>(std::move(theirs), mode),
+                                          script);
+  }
+};
+
 // A short handshake: every case below fails it within about a second.
 P2osRobotOptions short_handshake() {
   P2osRobotOptions o = quick_options();
@@ -217,14 +233,10 @@ TEST(P2osFailureKind, SipsWithBadChecksumsAreBadBytes) {
 
 // A robot that sent good SIPs and then fell silent for good: a lost link.
 TEST(P2osFailureKind, PeerFallingSilentIsALink) {
-  auto [ours, theirs] = make_memory_pair();
-  std::atomic<LinkMode> mode{LinkMode::kPass};
-  PeerScript script;
-  script.sip = counting_sip;
-  ScriptedPeer peer(std::make_unique<MutableLink>(std::move(theirs), mode), script);
-  P2osRobot robot(std::move(ours), quick_options());
+  BreakableRobot peer;
+  P2osRobot robot(std::move(peer.robot_end), quick_options());
   EXPECT_GE(frames_for(robot, 200ms).size(), 2u);
-  mode = LinkMode::kMute;
+  peer.mode = LinkMode::kMute;
   while (robot.next_frame()) {
   }
   EXPECT_EQ(robot.failure_kind(), P2osFailureKind::kLink) << robot.failure();
@@ -233,18 +245,14 @@ TEST(P2osFailureKind, PeerFallingSilentIsALink) {
 // Good SIPs, then only noise: the reconnection's handshakes get nothing but undecodable bytes
 // and give up. Bad input, and the message still names the offsets.
 TEST(P2osFailureKind, ReconnectionThatGetsOnlyNoiseIsBadBytes) {
-  auto [ours, theirs] = make_memory_pair();
-  std::atomic<LinkMode> mode{LinkMode::kPass};
-  PeerScript script;
-  script.sip = counting_sip;
-  ScriptedPeer peer(std::make_unique<MutableLink>(std::move(theirs), mode), script);
+  BreakableRobot peer;
   P2osRobotOptions o = short_handshake();
   o.silence_timeout = 400ms;
   o.reconnect_give_up = 1000ms;
   o.frame_wait = 10000ms;  // the reconnection gives up first
-  P2osRobot robot(std::move(ours), o);
+  P2osRobot robot(std::move(peer.robot_end), o);
   EXPECT_GE(frames_for(robot, 200ms).size(), 2u);
-  mode = LinkMode::kGarble;
+  peer.mode = LinkMode::kGarble;
   while (robot.next_frame()) {
   }
   const std::string failure = robot.failure();
@@ -257,11 +265,7 @@ TEST(P2osFailureKind, ReconnectionThatGetsOnlyNoiseIsBadBytes) {
 // whole handshake_timeout later (a handshake started just before the give-up time used to run
 // to its own end: up to 30 s + 30 s with the defaults).
 TEST(P2osFailureKind, ReconnectionEndsAtItsGiveUpTime) {
-  auto [ours, theirs] = make_memory_pair();
-  std::atomic<LinkMode> mode{LinkMode::kPass};
-  PeerScript script;
-  script.sip = counting_sip;
-  ScriptedPeer peer(std::make_unique<MutableLink>(std::move(theirs), mode), script);
+  BreakableRobot peer;
   P2osRobotOptions o = quick_options();
   o.silence_timeout = 300ms;
   o.sync_reply_timeout = 500ms;
@@ -269,9 +273,9 @@ TEST(P2osFailureKind, ReconnectionEndsAtItsGiveUpTime) {
   o.handshake_timeout = 6000ms;                   // ... cut to 6 s by its own bound
   o.reconnect_give_up = 1000ms;
   o.frame_wait = 20000ms;  // the reconnection gives up first
-  P2osRobot robot(std::move(ours), o);
+  P2osRobot robot(std::move(peer.robot_end), o);
   EXPECT_GE(frames_for(robot, 200ms).size(), 2u);
-  mode = LinkMode::kMute;
+  peer.mode = LinkMode::kMute;
   const auto muted = std::chrono::steady_clock::now();
   while (robot.next_frame()) {
   }
