@@ -99,6 +99,7 @@ int replay(const ReplayArgs& args) {
   // The log decides what happens: every frame is replayed and commands are not needed.
   experiment.controller.type = experiments::ControllerKind::kNone;
   experiment.controller.steer_by_truth = false;
+  experiment.controller.steer_by_plain_estimate = false;  // nothing steers: no second mapper
   experiment.duration_s = last_time_s + 1.0;
   options.out_dir = args.out.empty()
                         ? fs::path("runs") / experiments::safe_path_component(experiment.name)

@@ -112,10 +112,11 @@ ControllerConfig parse_controller(const Node& block) {
   }
   if (const auto pose = block.child("pose")) {
     const std::string p = pose->as<std::string>();
-    if (p != "estimate" && p != "truth") {
-      pose->fail("unknown pose source '" + p + "' (expected estimate or truth)");
+    if (p != "estimate" && p != "plain_estimate" && p != "truth") {
+      pose->fail("unknown pose source '" + p + "' (expected estimate, plain_estimate or truth)");
     }
     c.steer_by_truth = p == "truth";
+    c.steer_by_plain_estimate = p == "plain_estimate";
   }
   if (const auto strategy = block.child("strategy")) {
     if (c.type != ControllerKind::kExplore) strategy->fail("strategy is only used by explore");

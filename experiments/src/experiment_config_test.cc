@@ -194,9 +194,15 @@ TEST(ExperimentConfig, ControllerPoseSource) {
   EXPECT_TRUE(load_experiment(p).controller.steer_by_truth);
   const fs::path est = write_temp("est.yaml", "name: r\nworld: w.yaml\ncontroller: {type: none}\n");
   EXPECT_FALSE(load_experiment(est).controller.steer_by_truth);
+  EXPECT_FALSE(load_experiment(est).controller.steer_by_plain_estimate);
+  const Experiment plain = load_experiment(est, {"controller.pose=plain_estimate"});
+  EXPECT_TRUE(plain.controller.steer_by_plain_estimate);
+  EXPECT_FALSE(plain.controller.steer_by_truth);
   const fs::path bad = write_temp(
       "badpose.yaml", "name: r\nworld: w.yaml\ncontroller:\n  type: explore\n  pose: gps\n");
-  EXPECT_NE(error_of(bad).find(":5: controller.pose: unknown pose source 'gps'"), std::string::npos)
+  EXPECT_NE(error_of(bad).find(":5: controller.pose: unknown pose source 'gps' (expected "
+                               "estimate, plain_estimate or truth)"),
+            std::string::npos)
       << error_of(bad);
 }
 

@@ -128,6 +128,7 @@ std::string metrics_json_text(const RunMetrics& m) {
                      {"seed", m.seed},
                      {"source", m.source},
                      {"controller", m.controller},
+                     {"steering", m.steering},
                      {"grid", m.grid},
                      {"asr_boundary", m.boundary},
                      {"localization", m.localization_kind},

@@ -10,11 +10,13 @@
 #include "cogmap/experiments/controller_factory.h"
 #include "cogmap/experiments/error_breakdown.h"
 #include "cogmap/experiments/nav_metrics.h"
+#include "cogmap/experiments/plain_mapper_options.h"
 #include "cogmap/experiments/ros_map.h"
 #include "cogmap/experiments/run_directory.h"
 #include "cogmap/experiments/run_outputs.h"
 #include "cogmap/experiments/true_rooms.h"
 #include "cogmap/experiments/visible_truth_tracker.h"
+#include "cogmap/mapper/graph/asr_store.h"
 #include "cogmap/mapper/io/asr_json.h"
 #include "cogmap/mapper/io/directory_asr_store.h"
 #include "cogmap/mapper/mapper.h"
@@ -155,6 +157,15 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   const mapper::io::Durability durability = options.durability;
   mapper::io::DirectoryAsrStore store(out / "asrs", durability);
   mapper::Mapper mapper(experiment.mapper, geometry, store, start);
+  // `controller.pose: plain_estimate`: the controller's own mapper, fed the same frames, keeps
+  // its finished rooms in RAM (walls and path only, a few kB a room) and writes nothing.
+  mapper::MemoryAsrStore steering_store;
+  std::optional<mapper::Mapper> steering_mapper;
+  if (experiment.controller.steer_by_plain_estimate) {
+    steering_mapper.emplace(plain_mapper_options(experiment.mapper), geometry, steering_store,
+                            start);
+  }
+  const mapper::Mapper& steering = steering_mapper ? *steering_mapper : mapper;
   const double occupied_threshold = experiment.mapper.builder.occupied_threshold;
   Clock::duration figure_time{0};  // figures: not the frame loop's time
   // The room's grid file (grid_NNN.pgm/.yaml) and the per-stage error need the room's grids,
@@ -254,6 +265,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       if (!frame) break;
       const mapper::SensorFrame seen = without_truth(*frame);
       mapper.process(seen);
+      if (steering_mapper) steering_mapper->process(seen);
       stalled_s += (seen.stall_left || seen.stall_right) ? seen.time_s - last_time_s : 0.0;
       const mapper::Pose2 odometry = mapper.odometry_pose();
       if (last_odometry) {
@@ -281,7 +293,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
       if (frame->time_s >= experiment.duration_s) break;
       if (controller->done()) break;  // a finished route, or an exploration with no exit left
       const mapper::VelocityCommand cmd = controller->step(
-          nav_input(experiment.controller, seen, frame->true_pose, mapper, geometry));
+          nav_input(experiment.controller, seen, frame->true_pose, steering, geometry));
       robot.command(cmd);
       const mapper::nav::NavTrace& t = controller->trace();
       mode = t.mode;
@@ -325,6 +337,9 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   m.seed = experiment.seed;
   m.source = std::string(to_string(experiment.robot_source));
   m.controller = std::string(to_string(experiment.controller.type));
+  m.steering = experiment.controller.steer_by_truth            ? "truth"
+               : experiment.controller.steer_by_plain_estimate ? "plain_estimate"
+                                                               : "estimate";
   m.grid = grid_name(experiment.mapper.grid);
   m.boundary =
       experiment.mapper.boundary == mapper::BoundaryKind::kDoorway ? "doorway" : "distance";

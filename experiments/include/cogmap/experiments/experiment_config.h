@@ -41,6 +41,13 @@ struct ControllerConfig {
   /// short-term sonar memory (placed by the true pose), not with the mapper's grid, which lives
   /// in the estimate frame.
   bool steer_by_truth = false;
+  /// `pose: plain_estimate`: the controller steers by a second mapper, fed the same frames,
+  /// whose map-only refinements (plain_mapper_options: scan matching, glimpses, the odometry
+  /// recalibration, the translation moving the estimate) are off; the map, the trajectory and
+  /// every metric come from the first, with the experiment's own `mapper:` settings. The robot
+  /// then drives as it would without those refinements, so a map refinement can be measured
+  /// on the very same drive (docs/experiment-format.md). Both see only odometry and sonar.
+  bool steer_by_plain_estimate = false;
   /// Explore only: `strategy` (frontier, the default, or heading: the thesis's Fig. 1.2
   /// explorer, which never finishes), and budgets after which exploration stops unfinished
   /// (`time_budget_s`, `distance_budget_m`; 0 = none, the run's duration_s still applies).

@@ -52,11 +52,12 @@ struct RunMetrics {
   std::string name;  ///< experiment name
   std::string world;
   std::uint64_t seed = 0;
-  std::string source;             ///< sim | p2os | log
-  std::string controller;         ///< route | explore | none
-  std::string grid;               ///< himm | mhimm | bayes | dempster_shafer
-  std::string boundary;           ///< doorway | distance
-  std::string localization_kind;  ///< em | none
+  std::string source;                 ///< sim | p2os | log
+  std::string controller;             ///< route | explore | none
+  std::string steering = "estimate";  ///< controller.pose: estimate | plain_estimate | truth
+  std::string grid;                   ///< himm | mhimm | bayes | dempster_shafer
+  std::string boundary;               ///< doorway | distance
+  std::string localization_kind;      ///< em | none
   /// The odometry recalibration the mapper used (mapper.odometry_curvature_gain, 0 for a
   /// differential drive) and the robot's odometry track: scripts/fit-odometry-curvature adds its
   /// fit to the gain the runs were made with.

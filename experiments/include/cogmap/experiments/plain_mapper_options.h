@@ -1,0 +1,17 @@
+#pragma once
+/// What the controller's mapper uses with `controller.pose: plain_estimate`: the experiment's
+/// mapper settings with the map-only refinements back at the library's defaults, so that the
+/// robot drives as it would without them while the map is drawn with them
+/// (docs/experiment-format.md, "controller.pose").
+
+#include "cogmap/mapper/mapper.h"
+
+namespace cogmap::experiments {
+
+/// `map` with scan matching, glimpses, the odometry's curvature recalibration and the
+/// translation's move of the estimate as `mapper::MapperOptions{}` has them; everything else
+/// (grid, boundaries, EM, the cuts, door fixes, held turns) as `map` says, since those decide
+/// when rooms end and what EM corrects.
+mapper::MapperOptions plain_mapper_options(const mapper::MapperOptions& map);
+
+}  // namespace cogmap::experiments

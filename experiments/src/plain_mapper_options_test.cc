@@ -1,0 +1,48 @@
+#include "cogmap/experiments/plain_mapper_options.h"
+
+#include <gtest/gtest.h>
+
+namespace cogmap::experiments {
+namespace {
+
+/// Options with every map-only refinement on and the rest away from the library's defaults.
+mapper::MapperOptions refined() {
+  mapper::MapperOptions o;
+  o.scan_match.enabled = true;
+  o.scan_match.shift = false;
+  o.glimpse.enabled = true;
+  o.odometry_calibration.curvature_gain = 0.066;
+  o.translation.moves_estimate = true;
+  o.translation.max_offset_m = 0.7;
+  o.max_room_travel_m = 4.5;
+  o.builder.occupied_threshold = 5.0;
+  o.door_fix.enabled = !o.door_fix.enabled;
+  o.localization = mapper::LocalizationKind::kNone;
+  return o;
+}
+
+TEST(PlainMapperOptions, TheMapOnlyRefinementsGoBackToTheLibrarysDefaults) {
+  const mapper::MapperOptions library;
+  const mapper::MapperOptions plain = plain_mapper_options(refined());
+  EXPECT_EQ(plain.scan_match.enabled, library.scan_match.enabled);
+  EXPECT_EQ(plain.scan_match.shift, library.scan_match.shift);
+  EXPECT_EQ(plain.glimpse.enabled, library.glimpse.enabled);
+  EXPECT_EQ(plain.odometry_calibration.curvature_gain, 0.0);
+  EXPECT_EQ(plain.translation.moves_estimate, library.translation.moves_estimate);
+  EXPECT_FALSE(plain.scan_match.enabled);
+  EXPECT_FALSE(plain.glimpse.enabled);
+  EXPECT_FALSE(plain.translation.moves_estimate);
+}
+
+TEST(PlainMapperOptions, WhatDecidesRoomsAndCorrectionsIsKept) {
+  const mapper::MapperOptions in = refined();
+  const mapper::MapperOptions plain = plain_mapper_options(in);
+  EXPECT_EQ(plain.translation.max_offset_m, 0.7);  // the map's translation itself stays
+  EXPECT_EQ(plain.max_room_travel_m, 4.5);
+  EXPECT_EQ(plain.builder.occupied_threshold, 5.0);
+  EXPECT_EQ(plain.door_fix.enabled, in.door_fix.enabled);
+  EXPECT_EQ(plain.localization, mapper::LocalizationKind::kNone);
+}
+
+}  // namespace
+}  // namespace cogmap::experiments
