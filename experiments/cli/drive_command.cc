@@ -139,6 +139,7 @@ int drive(const DriveArgs& args) {
     std::cerr << "cogmap drive: controller.pose: truth is for simulated runs; steering by the "
                  "estimate\n";
     experiment.controller.steer_by_truth = false;
+    experiment.steering_given = false;  // what the controller steers by follows it
   }
   if (args.controller == "explore")
     experiment.controller.type = experiments::ControllerKind::kExplore;

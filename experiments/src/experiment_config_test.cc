@@ -100,6 +100,49 @@ mapper:
   EXPECT_EQ(given.mapper.max_room_travel_m, 6.0);
 }
 
+TEST(ExperimentConfig, AnExplorersMapIsDrawnWithTheMatcherItDoesNotSteerBy) {
+  const fs::path p = write_temp("explore_match.yaml", R"(name: explore
+world: ../worlds/two_rooms.yaml
+controller:
+  type: explore
+)");
+  Experiment e = load_experiment(p);
+  EXPECT_TRUE(e.mapper.scan_match.enabled);
+  EXPECT_FALSE(e.mapper.scan_match.shift);  // turning only
+  EXPECT_TRUE(e.controller.steer_by_plain_estimate);
+  EXPECT_FALSE(e.controller.steer_by_truth);
+  // cogmap drive --controller route: the library's defaults and the map's own estimate.
+  e.controller.type = ControllerKind::kRoute;
+  apply_controller_defaults(e);
+  EXPECT_FALSE(e.mapper.scan_match.enabled);
+  EXPECT_TRUE(e.mapper.scan_match.shift);
+  EXPECT_FALSE(e.controller.steer_by_plain_estimate);
+  // What the experiment gives is kept, each key on its own.
+  const Experiment pose = load_experiment(p, {"controller.pose=estimate"});
+  EXPECT_FALSE(pose.controller.steer_by_plain_estimate);
+  EXPECT_TRUE(pose.mapper.scan_match.enabled);
+  const Experiment truth = load_experiment(p, {"controller.pose=truth"});
+  EXPECT_TRUE(truth.controller.steer_by_truth);
+  EXPECT_FALSE(truth.controller.steer_by_plain_estimate);
+  const Experiment off = load_experiment(p, {"mapper.scan_match=false"});
+  EXPECT_FALSE(off.mapper.scan_match.enabled);
+  EXPECT_TRUE(off.controller.steer_by_plain_estimate);
+  const Experiment shift = load_experiment(p, {"mapper.scan_match_shift=true"});
+  EXPECT_TRUE(shift.mapper.scan_match.shift);
+  // A route gets none of it unless asked.
+  const Experiment route = load_experiment(write_temp("route_match.yaml", kGood));
+  EXPECT_NE(route.controller.type, ControllerKind::kExplore);
+  EXPECT_FALSE(route.mapper.scan_match.enabled);
+  EXPECT_FALSE(route.controller.steer_by_plain_estimate);
+  Experiment route_given = load_experiment(write_temp("route_match2.yaml", kGood),
+                                           {"mapper.scan_match=true", "controller.pose=estimate"});
+  route_given.controller.type = ControllerKind::kExplore;
+  apply_controller_defaults(route_given);
+  EXPECT_TRUE(route_given.mapper.scan_match.enabled);
+  EXPECT_FALSE(route_given.mapper.scan_match.shift);             // not given: the explorer's
+  EXPECT_FALSE(route_given.controller.steer_by_plain_estimate);  // given: kept
+}
+
 TEST(ExperimentConfig, OverridesAndSeedApplyBeforeValidation) {
   const fs::path p = write_temp("good2.yaml", kGood);
   const Experiment e = load_experiment(

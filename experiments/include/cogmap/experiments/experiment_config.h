@@ -101,6 +101,11 @@ struct Experiment {
   /// `mapper.max_room_travel_m` was given: else it follows the controller
   /// (apply_controller_defaults).
   bool room_travel_given = false;
+  /// `mapper.scan_match`, `mapper.scan_match_shift` and `controller.pose` were given: else
+  /// they follow the controller too (apply_controller_defaults).
+  bool scan_match_given = false;
+  bool scan_match_shift_given = false;
+  bool steering_given = false;
   bool figures = true;       ///< `output.figures`
   bool nav_trace = false;    ///< `output.nav_trace`: write nav_trace.csv (diagnostics)
   bool explore_map = false;  ///< `output.explore_map`: the explorer's map (diagnostics)
@@ -137,8 +142,11 @@ std::string bare_message(const yaml::ConfigError& error);
 inline constexpr double kExploreMaxRoomTravelM = 4.5;
 
 /// Sets what depends on the controller and was not given: `mapper.max_room_travel_m`
-/// (kExploreMaxRoomTravelM for an explorer, 0 otherwise). load_experiment calls it; call it
-/// again after changing `controller.type` (cogmap drive --controller).
+/// (kExploreMaxRoomTravelM for an explorer, 0 otherwise) and, for an explorer, the echo
+/// matcher in the map alone: `mapper.scan_match` on, `mapper.scan_match_shift` off and
+/// `controller.pose: plain_estimate` (otherwise the library's defaults and `estimate`; docs/
+/// algorithms.md, "The matcher in the map only"). load_experiment calls it; call it again after
+/// changing `controller.type` (cogmap drive --controller).
 void apply_controller_defaults(Experiment& e);
 
 /// Parses the `mapper` block into MapperOptions (defaults: thesis Table 4.1).
