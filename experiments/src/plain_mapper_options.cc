@@ -12,4 +12,11 @@ mapper::MapperOptions plain_mapper_options(const mapper::MapperOptions& map) {
   return plain;
 }
 
+bool has_map_only_refinements(const mapper::MapperOptions& map) {
+  const mapper::MapperOptions library;
+  return map.scan_match.enabled || map.glimpse.enabled ||
+         map.odometry_calibration.curvature_gain != library.odometry_calibration.curvature_gain ||
+         map.translation.moves_estimate != library.translation.moves_estimate;
+}
+
 }  // namespace cogmap::experiments

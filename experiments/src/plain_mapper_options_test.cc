@@ -44,5 +44,30 @@ TEST(PlainMapperOptions, WhatDecidesRoomsAndCorrectionsIsKept) {
   EXPECT_EQ(plain.localization, mapper::LocalizationKind::kNone);
 }
 
+TEST(PlainMapperOptions, EachRefinementCountsAndNothingElseDoes) {
+  const mapper::MapperOptions library;
+  EXPECT_FALSE(has_map_only_refinements(library));
+  EXPECT_TRUE(has_map_only_refinements(refined()));
+  EXPECT_FALSE(has_map_only_refinements(plain_mapper_options(refined())));
+  mapper::MapperOptions o = library;
+  o.scan_match.enabled = true;
+  EXPECT_TRUE(has_map_only_refinements(o));
+  o = library;
+  o.glimpse.enabled = true;
+  EXPECT_TRUE(has_map_only_refinements(o));
+  o = library;
+  o.odometry_calibration.curvature_gain = 0.066;
+  EXPECT_TRUE(has_map_only_refinements(o));
+  o = library;
+  o.translation.moves_estimate = true;
+  EXPECT_TRUE(has_map_only_refinements(o));
+  // A switched-off matcher's settings, and what both mappers share, are no refinement.
+  o = library;
+  o.scan_match.shift = false;
+  o.max_room_travel_m = 4.5;
+  o.builder.occupied_threshold = 5.0;
+  EXPECT_FALSE(has_map_only_refinements(o));
+}
+
 }  // namespace
 }  // namespace cogmap::experiments

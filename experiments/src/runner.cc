@@ -158,10 +158,12 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
   mapper::io::DirectoryAsrStore store(out / "asrs", durability);
   mapper::Mapper mapper(experiment.mapper, geometry, store, start);
   // `controller.pose: plain_estimate`: the controller's own mapper, fed the same frames, keeps
-  // its finished rooms in RAM (walls and path only, a few kB a room) and writes nothing.
+  // its finished rooms in RAM (walls and path only, a few kB a room) and writes nothing. With
+  // no map-only refinement on it would repeat the map's mapper exactly: then that one steers.
   mapper::MemoryAsrStore steering_store;
   std::optional<mapper::Mapper> steering_mapper;
-  if (experiment.controller.steer_by_plain_estimate) {
+  if (experiment.controller.steer_by_plain_estimate &&
+      has_map_only_refinements(experiment.mapper)) {
     steering_mapper.emplace(plain_mapper_options(experiment.mapper), geometry, steering_store,
                             start);
   }

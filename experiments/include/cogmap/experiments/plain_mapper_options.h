@@ -14,4 +14,9 @@ namespace cogmap::experiments {
 /// when rooms end and what EM corrects.
 mapper::MapperOptions plain_mapper_options(const mapper::MapperOptions& map);
 
+/// Whether `map` has any of those refinements on. Off, plain_mapper_options(map) draws and
+/// estimates exactly as `map` does (each refinement is gated by its own switch), so a second
+/// mapper would repeat the first frame for frame.
+bool has_map_only_refinements(const mapper::MapperOptions& map);
+
 }  // namespace cogmap::experiments
