@@ -13,7 +13,7 @@ set(disable
     -DCMAKE_DISABLE_FIND_PACKAGE_PkgConfig=ON
     -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON)
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BINARY_DIR} ${disable}
-                        -DCMAKE_BUILD_TYPE=Release -DCOGMAP_BENCHMARKS=OFF
+                        -DCMAKE_BUILD_TYPE=Release -DCOGMAP_BENCHMARKS=OFF -DCMAKE_UNITY_BUILD=ON
                         -DCMAKE_LINK_LIBRARIES_ONLY_TARGETS=ON
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

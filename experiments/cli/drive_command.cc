@@ -70,7 +70,7 @@ struct DriveArgs {
   bool force = false;  // replace an existing --record file and a finished run in --out
 };
 
-experiments::Experiment default_experiment(const std::vector<std::string>& sets) {
+experiments::Experiment drive_default_experiment(const std::vector<std::string>& sets) {
   // Without --experiment: mapper defaults, no world, stand still; --set works as in files.
   return experiments::load_experiment_text(
       "name: drive\nworld: none\nduration_s: 60\nrobot: {source: p2os}\ncontroller: {type: none}\n",
@@ -99,7 +99,7 @@ int drive(const DriveArgs& args) {
   }
   experiments::Experiment experiment;
   try {
-    experiment = args.experiment.empty() ? default_experiment(args.sets)
+    experiment = args.experiment.empty() ? drive_default_experiment(args.sets)
                                          : experiments::load_experiment(args.experiment, args.sets);
   } catch (const yaml::ConfigError& e) {
     std::cerr << "cogmap drive: " << e.what() << "\n";
@@ -239,7 +239,7 @@ int drive(const DriveArgs& args) {
   return code;
 }
 
-const CommandRegistrar kRegistrar{
+const CommandRegistrar kDriveRegistrar{
     "drive", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<DriveArgs>();
       CLI::App* sub = app.add_subcommand(

@@ -40,8 +40,8 @@ struct ReplayArgs {
 // Without --experiment: a minimal document, so --set and the mapper defaults work as in files.
 // The name (from the log's file name, which may hold any byte) is set after parsing, never
 // pasted into YAML text: a name with ": " or a newline must not become keys.
-experiments::Experiment default_experiment(const std::string& name,
-                                           const std::vector<std::string>& sets) {
+experiments::Experiment replay_default_experiment(const std::string& name,
+                                                  const std::vector<std::string>& sets) {
   experiments::Experiment e = experiments::load_experiment_text(
       "name: replay\nworld: none\nrobot: {source: log}\ncontroller: {type: none}\n",
       "replay-defaults.yaml", sets);
@@ -74,7 +74,7 @@ int replay(const ReplayArgs& args) {
   experiments::RunOptions options;
   try {
     if (args.experiment.empty()) {
-      experiment = default_experiment(
+      experiment = replay_default_experiment(
           "replay_" + experiments::safe_path_component(fs::path(args.log).stem().string()),
           args.sets);
     } else {
@@ -130,7 +130,7 @@ int replay(const ReplayArgs& args) {
   }
 }
 
-const CommandRegistrar kRegistrar{
+const CommandRegistrar kReplayRegistrar{
     "replay", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<ReplayArgs>();
       CLI::App* sub = app.add_subcommand("replay",

@@ -146,7 +146,7 @@ int run(const RunArgs& args) {
   }
 }
 
-const CommandRegistrar kRegistrar{
+const CommandRegistrar kRunRegistrar{
     "run", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<RunArgs>();
       CLI::App* sub = app.add_subcommand(

@@ -143,7 +143,7 @@ int serve(const ServeArgs& args) {
   return code;
 }
 
-const CommandRegistrar kRegistrar{
+const CommandRegistrar kServeRegistrar{
     "serve", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<ServeArgs>();
       CLI::App* sub = app.add_subcommand(

@@ -150,7 +150,7 @@ int sonar_model(const SonarModelArgs& args) {
   return kExitOk;
 }
 
-const CommandRegistrar kRegistrar{
+const CommandRegistrar kSonarModelRegistrar{
     "sonar-model", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<SonarModelArgs>();
       CLI::App* sub = app.add_subcommand(

@@ -96,7 +96,7 @@ int sonar_stats(const SonarStatsArgs& args) {
   return kExitOk;
 }
 
-const CommandRegistrar kRegistrar{
+const CommandRegistrar kSonarStatsRegistrar{
     "sonar-stats", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<SonarStatsArgs>();
       CLI::App* sub = app.add_subcommand(

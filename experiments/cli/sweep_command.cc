@@ -186,7 +186,7 @@ int sweep(const SweepArgs& args) {
   }
 }
 
-const CommandRegistrar kRegistrar{
+const CommandRegistrar kSweepRegistrar{
     "sweep", [](CLI::App& app, int& exit_code) {
       auto args = std::make_shared<SweepArgs>();
       CLI::App* sub = app.add_subcommand(

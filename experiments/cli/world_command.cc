@@ -71,7 +71,7 @@ void add_world_command(CLI::App& app, int& exit_code) {
   });
 }
 
-const CommandRegistrar kRegistrar{"world", add_world_command};
+const CommandRegistrar kWorldRegistrar{"world", add_world_command};
 
 }  // namespace
 }  // namespace cogmap::cli

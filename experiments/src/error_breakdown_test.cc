@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "cogmap/experiments/run_metrics.h"
+#include "cogmap/test_support/angles.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -14,10 +15,7 @@ using mapper::Point2;
 using mapper::Pose2;
 using mapper::Segment;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kEps = 1e-12;
-
-double rad(double deg) { return deg * kPi / 180.0; }
 
 // The room's local frame is placed in the world by this pose: turned 90° and moved to (1, 2),
 // so local (x, y) lands at world (1 − y, 2 + x) and the local line y = 0 is the world line x = 1.

@@ -151,7 +151,7 @@ ControllerConfig parse_controller(const Node& block) {
 }
 
 // `inner` is `outer` or a node inside it ("a.b" and "a.b[0]" are inside "a").
-bool within(const std::string& inner, const std::string& outer) {
+bool key_within(const std::string& inner, const std::string& outer) {
   return !outer.empty() &&
          (inner == outer || inner.starts_with(outer + ".") || inner.starts_with(outer + "["));
 }
@@ -187,10 +187,10 @@ struct Cause {
 Cause override_of(const std::string& key, const std::vector<std::string>& overrides) {
   if (key.empty()) return {};
   for (const std::string& o : overrides) {
-    if (within(key, o.substr(0, o.find('=')))) return {&o, true};
+    if (key_within(key, o.substr(0, o.find('=')))) return {&o, true};
   }
   for (const std::string& o : overrides) {
-    if (within(o.substr(0, o.find('=')), key)) return {&o, false};
+    if (key_within(o.substr(0, o.find('=')), key)) return {&o, false};
   }
   return {};
 }

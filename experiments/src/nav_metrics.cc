@@ -17,7 +17,7 @@ double point_segment_m(const Point2& p, const Point2& a, const Point2& b) {
   return mapper::distance_to_segment_m(p, mapper::Segment{a, b});
 }
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+using mapper::cross;
 
 bool segments_cross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);

@@ -21,7 +21,7 @@ using mapper::Segment;
 
 // A wall along y = 1 from x = 0 to 10; the robot heads +x with its centre at y = 1 - gap - 0.2525,
 // so its left side is `gap` from the wall.
-TrajectoryRow row_at(double t_s, double x_m, double gap_m) {
+TrajectoryRow nav_row_at(double t_s, double x_m, double gap_m) {
   TrajectoryRow r;
   r.t_s = t_s;
   r.truth = Pose2{x_m, 1.0 - gap_m - 0.2525, 0.0};
@@ -36,7 +36,7 @@ TEST(NavMetrics, ContactEpisodesFromTheTrueFootprint) {
   // turned 90 deg beside the wall's end (its corner 0.015 m from the wall's end point).
   const std::vector<double> gaps{0.5, 0.3, 0.019, 0.0, 0.1, 1.5, 0.012, 0.03};
   std::vector<TrajectoryRow> rows;
-  for (std::size_t i = 0; i < gaps.size(); ++i) rows.push_back(row_at(0.1 * i, 5.0, gaps[i]));
+  for (std::size_t i = 0; i < gaps.size(); ++i) rows.push_back(nav_row_at(0.1 * i, 5.0, gaps[i]));
   TrajectoryRow end;
   end.t_s = 0.8;
   end.truth = Pose2{10.0 + 0.2525 + 0.015, 1.0 - 0.313, 1.5707963267948966};
@@ -70,7 +70,7 @@ TEST(NavMetrics, ContactOnsetsNameTheModeAndThePlaceOnTheBody) {
   // Rows 0-3: the left side nears the wall and touches at row 2 (the whole side at 0.019 m:
   // the nearest point is one end of it).
   for (const double gap : {0.5, 0.3, 0.019, 0.5})
-    rows.push_back(row_at(0.1 * rows.size(), 5.0, gap));
+    rows.push_back(nav_row_at(0.1 * rows.size(), 5.0, gap));
   // Row 4: turned to face +y beside the wall's end, the front-left corner 0.015 m from it.
   TrajectoryRow end;
   end.t_s = 0.4;
@@ -78,7 +78,7 @@ TEST(NavMetrics, ContactOnsetsNameTheModeAndThePlaceOnTheBody) {
   rows.push_back(end);
   // Row 5 away again; row 6: backed into the wall from below, heading -80° (facing down and a
   // little right), so the rear-left corner, 0.352 m above the centre, comes 0.01 m from it.
-  rows.push_back(row_at(0.5, 5.0, 0.5));
+  rows.push_back(nav_row_at(0.5, 5.0, 0.5));
   const double heading = -80.0 * std::numbers::pi / 180.0;
   const double corner_up_m =
       std::sin(heading) * -0.313 + std::cos(heading) * 0.2525;  // the rear-left corner's y

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "cogmap/experiments/error_breakdown.h"
+#include "cogmap/test_support/angles.h"
 
 namespace cogmap::experiments {
 namespace {
@@ -13,8 +14,6 @@ namespace {
 using mapper::Point2;
 using mapper::Pose2;
 using mapper::Segment;
-
-double rad(double deg) { return deg * std::numbers::pi / 180.0; }
 
 // A 5 x 4 m room with a 1.5 m partition off its south wall: no rigid motion but the identity
 // lays it onto itself.

@@ -24,8 +24,8 @@ void write(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
 }
 
-std::string error_of(const fs::path& dir, const std::vector<fs::path>& inputs,
-                     FinishedRun finished = FinishedRun::kKeep) {
+std::string run_dir_error_of(const fs::path& dir, const std::vector<fs::path>& inputs,
+                             FinishedRun finished = FinishedRun::kKeep) {
   try {
     check_run_directory(dir, inputs, finished);
   } catch (const RunDirectoryError& e) {
@@ -47,35 +47,35 @@ TEST(RunDirectory, SafePathComponent) {
 
 TEST(RunDirectory, NewEmptyAndEarlierRunDirectoriesAreAccepted) {
   const fs::path base = fresh_dir("accept");
-  EXPECT_EQ(error_of(base / "missing", {}), "");
-  EXPECT_EQ(error_of(base, {}), "");  // empty
+  EXPECT_EQ(run_dir_error_of(base / "missing", {}), "");
+  EXPECT_EQ(run_dir_error_of(base, {}), "");  // empty
   // A run from before the marker existed: only run products.
   const fs::path old = base / "old";
   for (const char* f : {"metrics.json", "trajectory.csv", "grid_000.pgm", "grid_012.yaml",
                         "experiment.yaml", "asrs/000.json", "figures/graph.png"}) {
     write(old / f, "x");
   }
-  EXPECT_EQ(error_of(old, {}, FinishedRun::kReplace), "");
+  EXPECT_EQ(run_dir_error_of(old, {}, FinishedRun::kReplace), "");
   // With the marker anything goes (later cogmap versions may add outputs).
   write(base / "marked" / kRunMarkerName, "");
   write(base / "marked" / "future_output.bin", "");
-  EXPECT_EQ(error_of(base / "marked", {}), "");
+  EXPECT_EQ(run_dir_error_of(base / "marked", {}), "");
 }
 
 TEST(RunDirectory, ForeignFilesAndInputFoldersAreRefused) {
   const fs::path home = fresh_dir("home");
   write(home / "thesis.tex", "mine");
   write(home / "map.svg", "mine");
-  EXPECT_NE(error_of(home, {}).find("holds thesis.tex, which no cogmap run wrote"),
+  EXPECT_NE(run_dir_error_of(home, {}).find("holds thesis.tex, which no cogmap run wrote"),
             std::string::npos);
   // The folder of the experiment itself, even if it looks like a run directory.
   const fs::path run = fresh_dir("run");
   write(run / kRunMarkerName, "");
   write(run / "experiment.yaml", "name: x\n");
-  EXPECT_NE(error_of(run, {run / "experiment.yaml"}).find("is the folder of the input"),
+  EXPECT_NE(run_dir_error_of(run, {run / "experiment.yaml"}).find("is the folder of the input"),
             std::string::npos);
   write(run / "file_not_dir", "");
-  EXPECT_NE(error_of(run / "file_not_dir", {}).find("exists and is not a directory"),
+  EXPECT_NE(run_dir_error_of(run / "file_not_dir", {}).find("exists and is not a directory"),
             std::string::npos);
 }
 
@@ -91,10 +91,10 @@ TEST(RunDirectory, LinkedRunFoldersAreRefusedAndNeverClearedThrough) {
     if (marked) write(d / kRunMarkerName, "");
     write(d / "experiment.yaml", "name: x\n");
     fs::create_directory_symlink(base / "photos", d / "figures");
-    EXPECT_NE(error_of(d, {}).find("figures: is a symbolic link"), std::string::npos) << d;
+    EXPECT_NE(run_dir_error_of(d, {}).find("figures: is a symbolic link"), std::string::npos) << d;
     fs::remove(d / "figures");
     fs::create_directory_symlink(base / "ujson", d / "asrs");
-    EXPECT_NE(error_of(d, {}).find("asrs: is a symbolic link"), std::string::npos) << d;
+    EXPECT_NE(run_dir_error_of(d, {}).find("asrs: is a symbolic link"), std::string::npos) << d;
     clear_run_outputs(d);
     fs::remove(d / "asrs");
   }
@@ -104,7 +104,8 @@ TEST(RunDirectory, LinkedRunFoldersAreRefusedAndNeverClearedThrough) {
   const fs::path top = base / "top";
   write(top / "experiment.yaml", "name: x\n");
   fs::create_symlink(base / "ujson" / "001.json", top / "metrics.json");
-  EXPECT_NE(error_of(top, {}, FinishedRun::kReplace).find("holds metrics.json"), std::string::npos);
+  EXPECT_NE(run_dir_error_of(top, {}, FinishedRun::kReplace).find("holds metrics.json"),
+            std::string::npos);
 }
 
 TEST(RunDirectory, RunLikeNamesWithoutARunsRecordAreRefused) {
@@ -112,25 +113,27 @@ TEST(RunDirectory, RunLikeNamesWithoutARunsRecordAreRefused) {
   // metrics.json, and figures/ and asrs/ must hold only what a run draws and stores.
   const fs::path base = fresh_dir("lookalike");
   write(base / "grids" / "grid_123.pgm", "mine");
-  EXPECT_NE(error_of(base / "grids", {}).find("is not an earlier run's"), std::string::npos);
+  EXPECT_NE(run_dir_error_of(base / "grids", {}).find("is not an earlier run's"),
+            std::string::npos);
   // The lock file alone is a run's own (the runner checks again after taking it).
   write(base / "locked" / kRunLockName, "");
-  EXPECT_EQ(error_of(base / "locked", {}), "");
+  EXPECT_EQ(run_dir_error_of(base / "locked", {}), "");
   write(base / "photos" / "experiment.yaml", "name: x\n");
   write(base / "photos" / "figures" / "IMG_0001.png", "mine");
-  EXPECT_NE(error_of(base / "photos", {}).find("holds figures"), std::string::npos);
+  EXPECT_NE(run_dir_error_of(base / "photos", {}).find("holds figures"), std::string::npos);
   write(base / "store" / "experiment.yaml", "name: x\n");
   write(base / "store" / "asrs" / "notes.json", "mine");
-  EXPECT_NE(error_of(base / "store", {}).find("holds asrs"), std::string::npos);
+  EXPECT_NE(run_dir_error_of(base / "store", {}).find("holds asrs"), std::string::npos);
 }
 
 TEST(RunDirectory, AFinishedRunIsReplacedOnlyWhenAskedTo) {
   const fs::path d = fresh_dir("finished");
   write(d / kRunMarkerName, "");
   write(d / "metrics.json", "{}");
-  EXPECT_NE(error_of(d, {}).find("already holds a finished run (metrics.json); pass --force"),
-            std::string::npos);
-  EXPECT_EQ(error_of(d, {}, FinishedRun::kReplace), "");
+  EXPECT_NE(
+      run_dir_error_of(d, {}).find("already holds a finished run (metrics.json); pass --force"),
+      std::string::npos);
+  EXPECT_EQ(run_dir_error_of(d, {}, FinishedRun::kReplace), "");
 }
 
 TEST(RunDirectory, LockKeepsASecondWriterOut) {

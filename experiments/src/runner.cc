@@ -29,7 +29,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+constexpr double kRunnerDegPerRad = 180.0 / std::numbers::pi;
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
@@ -201,7 +201,7 @@ RunSummary run_robot_session(mapper::Robot& robot, const Experiment& experiment,
                    asr.polyline_bytes(),
                    asr.grid_bytes};
     report.parent = asr.parent;
-    report.heading_correction_deg = asr.heading_correction_rad * kDegPerRad;
+    report.heading_correction_deg = asr.heading_correction_rad * kRunnerDegPerRad;
     if (localized) report.localization = room_localization_report(*localized);
     report.start_time_s = asr.start_time_s;
     report.end_time_s = asr.end_time_s;

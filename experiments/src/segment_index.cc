@@ -13,7 +13,7 @@ using mapper::Point2;
 // Caps the bucket array so a stray far-away segment cannot make the index huge.
 constexpr double kMaxCells = 4.0e6;
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+using mapper::cross;
 
 // Sign of the orientation of (a, b, c) with a tolerance relative to the lengths involved.
 int orientation(const Point2& a, const Point2& b, const Point2& c) {

@@ -52,7 +52,7 @@ bool holds_plots(const fs::path& dir) {
 }
 
 // Whether key path `inner` is `outer` or lies inside it ("mapper.grid" in "mapper").
-bool within(const std::string& inner, const std::string& outer) {
+bool axis_key_within(const std::string& inner, const std::string& outer) {
   return inner == outer ||
          (inner.size() > outer.size() && inner.starts_with(outer) && inner[outer.size()] == '.');
 }
@@ -62,7 +62,7 @@ bool within(const std::string& inner, const std::string& outer) {
 // could not go through (`mapper.grid.x` with `grid: himm`). Any other error at or inside the
 // varied key is its value's (`duration_s: -1`, `world: missing.yaml`, `mapper: {gridd: 1}`).
 bool blames_key(const yaml::ConfigError& e, const std::string& axis_key) {
-  if (!within(axis_key, e.key())) return false;
+  if (!axis_key_within(axis_key, e.key())) return false;
   if (e.key() != axis_key) return true;  // a parent the override made or changed
   const std::string message = bare_message(e);
   return message.starts_with("unknown key") ||
@@ -104,7 +104,7 @@ std::string without_set_suffix(const std::string& message, const std::string& ke
   const std::string in_run = "run " + run.dir_name() + ")";
   if (e.file() == spec.base.string()) {
     for (const auto& [key, value] : run.values) {
-      if (!within(e.key(), key) && !within(key, e.key())) continue;
+      if (!axis_key_within(e.key(), key) && !axis_key_within(key, e.key())) continue;
       const auto axis = std::find_if(spec.vary.begin(), spec.vary.end(),
                                      [&](const SweepAxis& a) { return a.key == key; });
       const auto at = std::find(axis->values.begin(), axis->values.end(), value);

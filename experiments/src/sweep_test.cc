@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_temp(const std::string& name, const std::string& text) {
+fs::path write_sweep_file(const std::string& name, const std::string& text) {
   // One directory per test: ctest runs the tests of this file as parallel processes.
   const fs::path dir = test_support::process_scratch() / "sweep_test" /
                        ::testing::UnitTest::GetInstance()->current_test_info()->name();
@@ -23,12 +23,12 @@ fs::path write_temp(const std::string& name, const std::string& text) {
 }
 
 SweepSpec two_by_three() {
-  return load_sweep(write_temp("s.sweep.yaml",
-                               "base: nine_rooms.yaml\n"
-                               "seeds: [1, 2]\n"
-                               "vary:\n"
-                               "  mapper.cell_scale_mm: [55, 85, 100]\n"
-                               "  mapper.grid: [himm, mhimm]\n"));
+  return load_sweep(write_sweep_file("s.sweep.yaml",
+                                     "base: nine_rooms.yaml\n"
+                                     "seeds: [1, 2]\n"
+                                     "vary:\n"
+                                     "  mapper.cell_scale_mm: [55, 85, 100]\n"
+                                     "  mapper.grid: [himm, mhimm]\n"));
 }
 
 TEST(Sweep, ParsesAndResolvesBase) {
@@ -81,7 +81,8 @@ TEST(Sweep, BadShardText) {
 }
 
 TEST(Sweep, NoVaryMeansSeedsOnly) {
-  const auto runs = expand_sweep(load_sweep(write_temp("n.yaml", "base: b.yaml\nseeds: [3, 4]\n")));
+  const auto runs =
+      expand_sweep(load_sweep(write_sweep_file("n.yaml", "base: b.yaml\nseeds: [3, 4]\n")));
   ASSERT_EQ(runs.size(), 2u);
   EXPECT_EQ(runs[1].dir_name(), "seed=4");
 }
@@ -89,7 +90,7 @@ TEST(Sweep, NoVaryMeansSeedsOnly) {
 TEST(Sweep, StrictErrors) {
   auto err = [](const std::string& text) -> std::string {
     try {
-      (void)load_sweep(write_temp("bad.yaml", text));
+      (void)load_sweep(write_sweep_file("bad.yaml", text));
     } catch (const yaml::ConfigError& e) {
       return e.what();
     }
@@ -110,7 +111,7 @@ std::string sweep_error(const std::string& text, SweepLimits limits = {}) {
   try {
     // A file per test: ctest -j runs the tests of this file in parallel processes.
     const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    (void)load_sweep(write_temp(name + ".yaml", text), limits);
+    (void)load_sweep(write_sweep_file(name + ".yaml", text), limits);
   } catch (const yaml::ConfigError& e) {
     return e.what();
   }
@@ -135,7 +136,7 @@ TEST(Sweep, DuplicateSeedsAndValuesAreRefused) {
 // scalar's bare text) dropped the quotes: '007' went to --set as 007, '0.5' as the number,
 // 'false' as the boolean, 'a: b' as a mapping and '#x' as a comment.
 TEST(Sweep, SetTextsReadBackAsTheSweepWroteThem) {
-  const fs::path file = write_temp(
+  const fs::path file = write_sweep_file(
       "q.sweep.yaml",
       "base: b.yaml\nseeds: [1]\nvary:\n"
       "  name: ['007', \"x y\", 'a: b', '#x', \"it's \\\"q\\\"\", plain words, !!str 12,\n"

@@ -13,7 +13,7 @@ namespace {
 
 using mapper::Pose2;
 
-TrajectoryRow row_at(std::size_t i) {
+TrajectoryRow indexed_row_at(std::size_t i) {
   TrajectoryRow r;
   r.t_s = 0.1 * static_cast<double>(i);
   r.truth = Pose2{static_cast<double>(i), 0.0, 0.0};
@@ -31,7 +31,7 @@ TEST(TrajectoryLog, ReadsEveryRowInOrderAcrossChunks) {
     for (const std::size_t n :
          {std::size_t{0}, std::size_t{1}, chunk - 1, chunk, chunk + 1, 3 * chunk + 7}) {
       TrajectoryLog log(spill);
-      for (std::size_t i = 0; i < n; ++i) log.push_back(row_at(i));
+      for (std::size_t i = 0; i < n; ++i) log.push_back(indexed_row_at(i));
       EXPECT_EQ(log.spilled_rows(), spill ? (n / chunk) * chunk : 0u) << "rows " << n;
       const TrajectoryView view = log.view();
       EXPECT_EQ(log.size(), n);
@@ -40,7 +40,7 @@ TEST(TrajectoryLog, ReadsEveryRowInOrderAcrossChunks) {
       std::size_t i = 0;
       for (const TrajectoryRow& r : view) {
         ASSERT_LT(i, n);
-        EXPECT_EQ(r.t_s, row_at(i).t_s);
+        EXPECT_EQ(r.t_s, indexed_row_at(i).t_s);
         EXPECT_EQ(r.truth->x_m, static_cast<double>(i));
         EXPECT_EQ(r.estimate.y_m, 0.5);
         ++i;
@@ -56,7 +56,7 @@ TEST(TrajectoryLog, ReadsEveryRowInOrderAcrossChunks) {
 TEST(TrajectoryLog, ReadersDoNotDisturbEachOther) {
   const std::size_t chunk = TrajectoryLog::kRowsPerChunk;
   TrajectoryLog log;
-  for (std::size_t i = 0; i < 3 * chunk; ++i) log.push_back(row_at(i));
+  for (std::size_t i = 0; i < 3 * chunk; ++i) log.push_back(indexed_row_at(i));
   ASSERT_EQ(log.spilled_rows(), 3 * chunk);
   const TrajectoryView view = log.view();
   auto a = view.begin();
@@ -64,11 +64,11 @@ TEST(TrajectoryLog, ReadersDoNotDisturbEachOther) {
   auto b = a;
   ++b;  // the second chunk's first row, read into b's own buffer
   ++b;
-  EXPECT_EQ(a->t_s, row_at(chunk - 1).t_s);
-  EXPECT_EQ(b->t_s, row_at(chunk + 1).t_s);
+  EXPECT_EQ(a->t_s, indexed_row_at(chunk - 1).t_s);
+  EXPECT_EQ(b->t_s, indexed_row_at(chunk + 1).t_s);
   ++a;
-  EXPECT_EQ(a->t_s, row_at(chunk).t_s);
-  EXPECT_EQ(b->t_s, row_at(chunk + 1).t_s);
+  EXPECT_EQ(a->t_s, indexed_row_at(chunk).t_s);
+  EXPECT_EQ(b->t_s, indexed_row_at(chunk + 1).t_s);
 }
 
 // The metrics read a spilled log exactly as they read one vector of the same rows.
@@ -76,7 +76,7 @@ TEST(TrajectoryLog, MetricsReadASpilledLogAsTheSameRowsInMemory) {
   std::vector<TrajectoryRow> all;
   TrajectoryLog log;
   for (std::size_t i = 0; i < 2 * TrajectoryLog::kRowsPerChunk + 5; ++i) {
-    TrajectoryRow r = row_at(i);
+    TrajectoryRow r = indexed_row_at(i);
     r.odometry.y_m = (i % 3 == 0) ? 1.0 : 1.25;  // a path that is not a straight line
     r.estimate.theta_rad = 0.001 * static_cast<double>(i % 17);
     all.push_back(r);
@@ -98,7 +98,7 @@ TEST(TrajectoryLog, MetricsReadASpilledLogAsTheSameRowsInMemory) {
 // they read one vector of the same rows.
 TEST(TrajectoryView, PiecesReadAsOneSequence) {
   std::vector<TrajectoryRow> all;
-  for (std::size_t i = 0; i < 7; ++i) all.push_back(row_at(i));
+  for (std::size_t i = 0; i < 7; ++i) all.push_back(indexed_row_at(i));
   const std::span<const TrajectoryRow> rows(all);
   const std::vector<std::span<const TrajectoryRow>> pieces{rows.subspan(0, 3), rows.subspan(3, 0),
                                                            rows.subspan(3, 1), rows.subspan(4, 3)};
@@ -107,7 +107,7 @@ TEST(TrajectoryView, PiecesReadAsOneSequence) {
   std::vector<double> times;
   for (const TrajectoryRow& r : split) times.push_back(r.t_s);
   ASSERT_EQ(times.size(), 7u);
-  for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(times[i], row_at(i).t_s);
+  for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(times[i], indexed_row_at(i).t_s);
   // 6 steps of 1 m between odometry positions.
   EXPECT_DOUBLE_EQ(odometry_distance_m(split), 6.0);
   EXPECT_EQ(trajectory_csv(split), trajectory_csv(all));

@@ -23,10 +23,6 @@ struct Raster {
   std::size_t cells() const { return nx * ny; }
 };
 
-double point_segment_m(const Point2& p, const Point2& a, const Point2& b) {
-  return mapper::distance_to_segment_m(p, mapper::Segment{a, b});
-}
-
 /// Indices of the cells whose centres lie in [lo, hi] along an axis starting at `origin`,
 /// clamped to [0, n); empty when first > last.
 std::pair<std::ptrdiff_t, std::ptrdiff_t> centre_range(double lo, double hi, double origin,
@@ -58,7 +54,8 @@ void mark_segment(const Raster& r, const mapper::Segment& s, double h,
     const auto [i0, i1] = centre_range(xa - h, xb + h, r.x0, r.res, r.nx);
     for (std::ptrdiff_t i = i0; i <= i1; ++i) {
       const Point2 c(r.x0 + (static_cast<double>(i) + 0.5) * r.res, y);
-      if (point_segment_m(c, s.a, s.b) <= h) wall[static_cast<std::size_t>(j) * r.nx + i] = 1;
+      if (mapper::distance_to_segment_m(c, mapper::Segment{s.a, s.b}) <= h)
+        wall[static_cast<std::size_t>(j) * r.nx + i] = 1;
     }
   }
 }

@@ -33,7 +33,7 @@ void add_wall(std::vector<Segment>& out, std::initializer_list<Point2> polyline)
   }
 }
 
-TrajectoryRow row_at(double x, double y) {
+TrajectoryRow row_at_xy(double x, double y) {
   TrajectoryRow row;
   row.truth = Pose2{x, y, 0.0};
   row.odometry = row.estimate = Pose2{x, y, 0.0};
@@ -45,7 +45,7 @@ void add_path(std::vector<TrajectoryRow>& rows, Point2 a, Point2 b) {
   const int n = static_cast<int>(std::ceil((b - a).norm() / 0.05));
   for (int k = 0; k <= n; ++k) {
     const Point2 p = a + (b - a) * (static_cast<double>(k) / std::max(n, 1));
-    rows.push_back(row_at(p.x(), p.y()));
+    rows.push_back(row_at_xy(p.x(), p.y()));
   }
 }
 
@@ -131,7 +131,7 @@ TEST(TrueRooms, NoRowsVisitNothing) {
 
 TEST(TrueRooms, StandingInTheDoorwayEntersNeitherRoom) {
   // The doorway (and every cell within 0.65 m of a wall) is not room core.
-  const std::vector<TrajectoryRow> rows{row_at(5.0, 2.5), row_at(5.5, 2.5)};
+  const std::vector<TrajectoryRow> rows{row_at_xy(5.0, 2.5), row_at_xy(5.5, 2.5)};
   EXPECT_EQ(count_true_rooms(two_rooms(1.0), rows).visited, 0u);
 }
 
@@ -142,7 +142,7 @@ TEST(TrueRooms, A1point2MetreDoorStillSeparates) {
 TEST(TrueRooms, A1point6MetreOpeningMergesTheRooms) {
   // The documented limit: an opening wider than 2 × door_close_radius_m between wall cells
   // (about 1.42 m between the wall faces) stays open, so the two rooms are one.
-  std::vector<TrajectoryRow> rows{row_at(2.5, 2.5), row_at(7.5, 2.5)};
+  std::vector<TrajectoryRow> rows{row_at_xy(2.5, 2.5), row_at_xy(7.5, 2.5)};
   const TrueRooms r = count_true_rooms(two_rooms(1.6), rows);
   EXPECT_EQ(r.total, 1u);
   EXPECT_EQ(r.visited, 1u);
@@ -151,7 +151,7 @@ TEST(TrueRooms, A1point6MetreOpeningMergesTheRooms) {
 TEST(TrueRooms, NineRoomBlockHasNineRooms) {
   std::vector<TrajectoryRow> rows;
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) rows.push_back(row_at(2.5 + 5.0 * i, 2.5 + 5.0 * j));
+    for (int j = 0; j < 3; ++j) rows.push_back(row_at_xy(2.5 + 5.0 * i, 2.5 + 5.0 * j));
   }
   const TrueRooms all = count_true_rooms(nine_rooms(), rows);
   EXPECT_EQ(all.total, 9u);
@@ -184,20 +184,20 @@ TEST(TrueRooms, SliversSmallerThanTheAreaLimitAreNotRooms) {
 }
 
 TEST(TrueRooms, RowsWithoutTruthAreIgnored) {
-  std::vector<TrajectoryRow> rows{row_at(2.5, 2.5)};
+  std::vector<TrajectoryRow> rows{row_at_xy(2.5, 2.5)};
   TrajectoryRow no_truth;  // estimate and odometry in room B, but no true pose
   no_truth.estimate = no_truth.odometry = Pose2{7.5, 2.5, 0.0};
   rows.push_back(no_truth);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  rows.push_back(row_at(nan, 2.5));
-  rows.push_back(row_at(1e300, -1e300));  // far outside the raster
+  rows.push_back(row_at_xy(nan, 2.5));
+  rows.push_back(row_at_xy(1e300, -1e300));  // far outside the raster
   const TrueRooms r = count_true_rooms(two_rooms(1.0), rows);
   EXPECT_EQ(r.total, 2u);
   EXPECT_EQ(r.visited, 1u);
 }
 
 TEST(TrueRooms, NoSurfacesIsNoRooms) {
-  const std::vector<TrajectoryRow> rows{row_at(1.0, 1.0)};
+  const std::vector<TrajectoryRow> rows{row_at_xy(1.0, 1.0)};
   const TrueRooms none = count_true_rooms({}, rows);
   EXPECT_EQ(none.total, 0u);
   EXPECT_EQ(none.visited, 0u);
@@ -222,7 +222,7 @@ TEST(TrueRooms, RotatedBuildingGivesTheSameCounts) {
   };
   const auto rows_at = [&](std::initializer_list<Point2> points) {
     std::vector<TrajectoryRow> rows;
-    for (const Point2& p : points) rows.push_back(row_at(turn(p).x(), turn(p).y()));
+    for (const Point2& p : points) rows.push_back(row_at_xy(turn(p).x(), turn(p).y()));
     return rows;
   };
 
@@ -272,7 +272,7 @@ TEST(TrueRooms, TheEnclosedBlockInsideACorridorLoopIsNoRoom) {
 }
 
 TEST(TrueRooms, StartInAWithTheDoorOpenReachesBothRooms) {
-  const std::vector<TrajectoryRow> rows{row_at(2.5, 2.5)};
+  const std::vector<TrajectoryRow> rows{row_at_xy(2.5, 2.5)};
   const TrueRooms r = count_true_rooms(two_rooms(1.0), rows);
   EXPECT_EQ(r.total, 2u);
   EXPECT_EQ(r.visited, 1u);
@@ -280,10 +280,10 @@ TEST(TrueRooms, StartInAWithTheDoorOpenReachesBothRooms) {
 
 TEST(TrueRooms, WithoutADoorTheOtherRoomIsUnreachable) {
   const auto walls = two_rooms_no_door();
-  const TrueRooms from_a = count_true_rooms(walls, std::vector<TrajectoryRow>{row_at(2.5, 2.5)});
+  const TrueRooms from_a = count_true_rooms(walls, std::vector<TrajectoryRow>{row_at_xy(2.5, 2.5)});
   EXPECT_EQ(from_a.total, 1u);
   EXPECT_EQ(from_a.visited, 1u);
-  const TrueRooms from_b = count_true_rooms(walls, std::vector<TrajectoryRow>{row_at(7.5, 2.5)});
+  const TrueRooms from_b = count_true_rooms(walls, std::vector<TrajectoryRow>{row_at_xy(7.5, 2.5)});
   EXPECT_EQ(from_b.total, 1u);
   EXPECT_EQ(from_b.visited, 1u);
   EXPECT_EQ(count_true_rooms(walls, {}).total, 2u);  // no start: the fallback counts both
@@ -295,8 +295,8 @@ TEST(TrueRooms, TheStartIsTheFirstRowWithAFiniteTruePosition) {
   TrajectoryRow no_truth;
   no_truth.estimate = no_truth.odometry = Pose2{2.5, 2.5, 0.0};
   // Starts in B; a later row in A (a teleport) neither makes A reachable nor visits it.
-  const std::vector<TrajectoryRow> rows{no_truth, row_at(nan, 2.5), row_at(7.5, 2.5),
-                                        row_at(2.5, 2.5)};
+  const std::vector<TrajectoryRow> rows{no_truth, row_at_xy(nan, 2.5), row_at_xy(7.5, 2.5),
+                                        row_at_xy(2.5, 2.5)};
   const TrueRooms r = count_true_rooms(walls, rows);
   EXPECT_EQ(r.total, 1u);
   EXPECT_EQ(r.visited, 1u);
@@ -305,7 +305,7 @@ TEST(TrueRooms, TheStartIsTheFirstRowWithAFiniteTruePosition) {
 TEST(TrueRooms, AStartOnAWallCellUsesTheNearestFreeCell) {
   // x = 4.96 lies in the dividing wall (faces at 4.94 and 5.06), nearer room A's side.
   const auto walls = two_rooms_no_door();
-  const std::vector<TrajectoryRow> rows{row_at(4.96, 2.5), row_at(2.5, 2.5)};
+  const std::vector<TrajectoryRow> rows{row_at_xy(4.96, 2.5), row_at_xy(2.5, 2.5)};
   const TrueRooms r = count_true_rooms(walls, rows);
   EXPECT_EQ(r.total, 1u);
   EXPECT_EQ(r.visited, 1u);
@@ -313,7 +313,7 @@ TEST(TrueRooms, AStartOnAWallCellUsesTheNearestFreeCell) {
 
 TEST(TrueRooms, AStartOutsideTheBuildingReachesNoRoom) {
   // Far off the raster: clamped to its border, which is the outside.
-  const std::vector<TrajectoryRow> rows{row_at(-50.0, 2.5)};
+  const std::vector<TrajectoryRow> rows{row_at_xy(-50.0, 2.5)};
   EXPECT_EQ(count_true_rooms(two_rooms(1.0), rows).total, 0u);
 }
 
@@ -323,7 +323,7 @@ TEST(TrueRooms, HugeWorldIsCoarsenedNotExhausted) {
   add_wall(walls, {{0, 0}, {2000, 0}, {2000, 2000}, {0, 2000}, {0, 0}});
   TrueRoomsOptions small;
   small.max_cells = 100'000;
-  const std::vector<TrajectoryRow> rows{row_at(1000.0, 1000.0)};
+  const std::vector<TrajectoryRow> rows{row_at_xy(1000.0, 1000.0)};
   // Coarsened to ~6 m cells: far past the 0.1 m at which a door stays open, so flagged...
   const TrueRooms r = count_true_rooms(walls, rows, small);
   EXPECT_FALSE(r.measurable);

@@ -17,11 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_log(const std::string& name, const std::string& text) {
+fs::path carmen_log(const std::string& name, const std::string& text) {
   return testing::write_log("carmen_import_test", name, text);
 }
 
-std::string error_of(const fs::path& p) {
+std::string carmen_error_of(const fs::path& p) {
   return testing::import_error([](const fs::path& f) { return import_carmen_log(f); }, p);
 }
 
@@ -52,7 +52,7 @@ const std::string kOdom2 =
 // Before: refused, "expected SONAR cone n range*n (x y theta)*n x y theta [tv rv] timestamp host
 // logger_ts at field 12": the importer wanted a robot pose CARMEN never writes.
 TEST(CarmenImport, SonarLineAsCarmenWritesIt) {
-  const fs::path p = write_log("real.log", kLoggerHeader + kOdom1 + kSonar1 + kOdom2 + kSonar2);
+  const fs::path p = carmen_log("real.log", kLoggerHeader + kOdom1 + kSonar1 + kOdom2 + kSonar2);
   EXPECT_EQ(detect_log_format(p), LogFormat::kCarmen);
   const ImportedLog log = import_carmen_log(p);
   ASSERT_EQ(log.frames.size(), 4u);
@@ -78,7 +78,7 @@ TEST(CarmenImport, SonarLineAsCarmenWritesIt) {
 
 // Before: the same refusal. A SONAR line before the first ODOM has no pose to take.
 TEST(CarmenImport, SonarBeforeAnyOdomIsSkipped) {
-  const ImportedLog log = import_carmen_log(write_log("l.log", kSonar1 + kOdom2 + kSonar2));
+  const ImportedLog log = import_carmen_log(carmen_log("l.log", kSonar1 + kOdom2 + kSonar2));
   ASSERT_EQ(log.frames.size(), 2u);
   EXPECT_TRUE(log.frames[0].sonar.empty());
   EXPECT_EQ(log.frames[0].time_s, 0.0);  // time starts at the first line read
@@ -94,7 +94,7 @@ TEST(CarmenImport, SonarWithStaleOdomIsSkipped) {
   const std::string odom = "ODOM 0.1 0 0 0 0 0 1100000000.800000 p2at 0.801234\n";
   const std::string fresh =
       "SONAR 0.261799 1 1.30 0.147 0.136 1.570796 1100000001.200000 p2at 1.201234\n";
-  const ImportedLog log = import_carmen_log(write_log("l.log", kOdom1 + late + odom + fresh));
+  const ImportedLog log = import_carmen_log(carmen_log("l.log", kOdom1 + late + odom + fresh));
   ASSERT_EQ(log.frames.size(), 3u);  // two ODOM frames, the second SONAR line (0.4 s after)
   EXPECT_EQ(log.frames[2].time_s, 1.2);
   EXPECT_EQ(log.frames[2].sonar.at(0).range_m, 1.3);
@@ -103,8 +103,8 @@ TEST(CarmenImport, SonarWithStaleOdomIsSkipped) {
 
 // Before: "expected SONAR ... at field 12". Now it says why nothing can be mapped.
 TEST(CarmenImport, SonarOnlyLogSaysWhy) {
-  const fs::path p = write_log("s.log", kLoggerHeader + kSonar1 + kSonar2);
-  EXPECT_EQ(error_of(p),
+  const fs::path p = carmen_log("s.log", kLoggerHeader + kSonar1 + kSonar2);
+  EXPECT_EQ(carmen_error_of(p),
             "s.log: no ODOM line before its 2 SONAR lines: a CARMEN SONAR line has no robot "
             "pose (it takes the latest ODOM's), so there is nothing to map");
 }
@@ -116,18 +116,19 @@ TEST(CarmenImport, LogWithoutSonarSaysWhatItHolds) {
   const std::string flaser =
       "FLASER 3 1.00 1.10 1.20 0.05 0.00 0.01 0.05 0.00 0.01 1100000000.010000 p2at 0.01\n";
   const std::string param = "PARAM robot_front_laser_max 81.900000 1100000000.000000 p2at 0.0\n";
-  EXPECT_EQ(error_of(write_log("l.log", kLoggerHeader + param + kOdom1 + flaser + kOdom2 + flaser)),
+  EXPECT_EQ(carmen_error_of(
+                carmen_log("l.log", kLoggerHeader + param + kOdom1 + flaser + kOdom2 + flaser)),
             "l.log: no sonar readings (SONAR lines with ranges); lines: PARAM (1 skipped), ODOM "
             "(2 read), FLASER (2 skipped)");
-  EXPECT_EQ(error_of(write_log("o.log", kOdom1 + kOdom2)),
+  EXPECT_EQ(carmen_error_of(carmen_log("o.log", kOdom1 + kOdom2)),
             "o.log: no sonar readings (SONAR lines with ranges); lines: ODOM (2 read)");
   // Lasers alone, no odometry: a CARMEN log all the same, not "not a CARMEN log".
-  EXPECT_EQ(error_of(write_log("f.log", flaser + flaser)),
+  EXPECT_EQ(carmen_error_of(carmen_log("f.log", flaser + flaser)),
             "f.log: no sonar readings (SONAR lines with ranges); lines: FLASER (2 skipped)");
   // SONAR lines that cannot be placed say why.
   const std::string late =
       "SONAR 0.261799 1 1.40 0.147 0.136 1.570796 1100000000.700000 p2at 0.701234\n";
-  EXPECT_EQ(error_of(write_log("s.log", kOdom1 + late)),
+  EXPECT_EQ(carmen_error_of(carmen_log("s.log", kOdom1 + late)),
             "s.log: no sonar readings (SONAR lines with ranges); lines: ODOM (1 read), SONAR (1 "
             "skipped: more than 0.5 s after the latest ODOM)");
 }
@@ -136,10 +137,10 @@ TEST(CarmenImport, LogWithoutSonarSaysWhatItHolds) {
 // nothing to map: they are skipped, and say why.
 TEST(CarmenImport, SonarLinesWithoutRangesAreSkipped) {
   const std::string none = "SONAR 0.261799 0 1100000000.050000 p2at 0.051234\n";
-  EXPECT_EQ(error_of(write_log("z.log", kOdom1 + none + none + none)),
+  EXPECT_EQ(carmen_error_of(carmen_log("z.log", kOdom1 + none + none + none)),
             "z.log: no sonar readings (SONAR lines with ranges); lines: ODOM (1 read), SONAR (3 "
             "skipped: no ranges)");
-  const ImportedLog log = import_carmen_log(write_log("r.log", kOdom1 + none + kSonar1));
+  const ImportedLog log = import_carmen_log(carmen_log("r.log", kOdom1 + none + kSonar1));
   ASSERT_EQ(log.frames.size(), 2u);
   EXPECT_EQ(log.frames[1].sonar.size(), 3u);
   EXPECT_EQ(log.ignored_lines, 1u);
@@ -160,7 +161,7 @@ TEST(CarmenImport, OtherMessagesInterleavedAreSkipped) {
       "GLOBALPOS 1.0 2.0 0.1 0.0 0.0 0.0 1100000000.031000 p2at 0.031\n"
       "# a comment in between\n" +
       kSonar1 + "BUMPER 2 0 1 0.1 0.2 0.1 -0.2 1100000000.060000 p2at 0.06\n" + kOdom2 + kSonar2;
-  const ImportedLog log = import_carmen_log(write_log("l.log", text));
+  const ImportedLog log = import_carmen_log(carmen_log("l.log", text));
   EXPECT_EQ(log.frames.size(), 4u);
   EXPECT_EQ(log.ignored_lines, 9u);
   EXPECT_EQ(log.frames[1].sonar.size(), 3u);
@@ -174,10 +175,10 @@ TEST(CarmenImport, DetectsLogsStartingWithAnyCarmenMessage) {
         "RLASER 1 2.00 0 0 0 0 0 0 1100000000.0 h 0.0\n", "ROBOTLASER2 0 0 0 0 0 0 0 0 0 0\n",
         "NMEAGGA 1 0 0 N 0 E 0 0 0 0 0 0 0 0 1100000000.0 h 0.0\n",
         "COMMENT started 1100000000.0 h 0.0\n"}) {
-    EXPECT_EQ(detect_log_format(write_log("first.log", first + kOdom1)), LogFormat::kCarmen)
+    EXPECT_EQ(detect_log_format(carmen_log("first.log", first + kOdom1)), LogFormat::kCarmen)
         << first;
     // The logger's own header decides, whatever follows it.
-    EXPECT_EQ(detect_log_format(write_log("hdr.log", kLoggerHeader + first)), LogFormat::kCarmen);
+    EXPECT_EQ(detect_log_format(carmen_log("hdr.log", kLoggerHeader + first)), LogFormat::kCarmen);
   }
 }
 
@@ -188,7 +189,7 @@ TEST(CarmenImport, CrlfTrailingSpacesAndNumberForms) {
       "ODOM 1.2e-05 -0.000000 -0.000 0 0 0 1100000000.000000 p2at 0.0  \r\n"
       "SONAR 0.261799 2 +1.25 2.50 0.147 0.136 1.570796 0.193 0.119 0.872665 "
       "1100000000.050000 p2at 0.05 \r\n";
-  const ImportedLog log = import_carmen_log(write_log("l.log", text));
+  const ImportedLog log = import_carmen_log(carmen_log("l.log", text));
   ASSERT_EQ(log.frames.size(), 2u);
   EXPECT_EQ(log.frames[0].odometry.x_m, 1.2e-05);
   EXPECT_EQ(log.frames[0].odometry.theta_rad, 0.0);
@@ -206,7 +207,7 @@ TEST(CarmenImport, EpochTimestampsKeepMicroseconds) {
       "ODOM 0 0 0 0 0 0 1100001234.567891 p2at 0.0\n"
       "ODOM 0 0 0 0 0 0 1.1000012346e9 p2at 0.0\n"
       "SONAR 0.261799 1 1.40 0.147 0.136 1.570796 1100001234.600000 p2at 0.0\n";
-  const ImportedLog log = import_carmen_log(write_log("l.log", text));
+  const ImportedLog log = import_carmen_log(carmen_log("l.log", text));
   ASSERT_EQ(log.frames.size(), 6u);
   EXPECT_EQ(log.frames[1].time_s, 0.000001);
   EXPECT_EQ(log.frames[2].time_s, 0.05);
@@ -221,7 +222,7 @@ TEST(CarmenImport, LongParamBlockFirst) {
     text += "PARAM module_param" + std::to_string(i) + " value" + std::to_string(i) +
             " 1100000000.000000 p2at 0.000000\n";
   }
-  const fs::path p = write_log("l.log", text + kOdom1 + kSonar1);
+  const fs::path p = carmen_log("l.log", text + kOdom1 + kSonar1);
   EXPECT_EQ(detect_log_format(p), LogFormat::kCarmen);
   const ImportedLog log = import_carmen_log(p);
   EXPECT_EQ(log.frames.size(), 2u);
@@ -231,19 +232,19 @@ TEST(CarmenImport, LongParamBlockFirst) {
 // A SONAR line that fits no layout stays an error naming the file, the line and both layouts.
 TEST(CarmenImport, MalformedSonarNamesFileAndLine) {
   const fs::path p =
-      write_log("bad.log", kOdom1 +
-                               "SONAR 0.261799 2 1.40 2.00 0.147 0.136 1.570796 0.193 0.119 "
-                               "1100000000.050000 p2at 0.05\n");
-  EXPECT_EQ(error_of(p),
+      carmen_log("bad.log", kOdom1 +
+                                "SONAR 0.261799 2 1.40 2.00 0.147 0.136 1.570796 0.193 0.119 "
+                                "1100000000.050000 p2at 0.05\n");
+  EXPECT_EQ(carmen_error_of(p),
             "bad.log:2: expected SONAR cone n range*n (x y theta)*n [robot_x robot_y robot_theta "
             "[tv rv]] timestamp host logger_ts at field 12, got 'p2at'");
-  const fs::path q = write_log("bad2.log", kOdom1 + "SONAR 0.26 2 1.4\n");
-  EXPECT_NE(error_of(q).find("bad2.log:2: expected SONAR cone n"), std::string::npos)
-      << error_of(q);
-  const fs::path r = write_log("bad3.log",
-                               "ODOM 0 0 0 0 0 0 1100000000.0 p2at 0.0\n"
-                               "ODOM 0 0 0 0 0 0 11000x0000.1 p2at 0.1\n");
-  EXPECT_EQ(error_of(r), "bad3.log:2: expected timestamp at field 8, got '11000x0000.1'");
+  const fs::path q = carmen_log("bad2.log", kOdom1 + "SONAR 0.26 2 1.4\n");
+  EXPECT_NE(carmen_error_of(q).find("bad2.log:2: expected SONAR cone n"), std::string::npos)
+      << carmen_error_of(q);
+  const fs::path r = carmen_log("bad3.log",
+                                "ODOM 0 0 0 0 0 0 1100000000.0 p2at 0.0\n"
+                                "ODOM 0 0 0 0 0 0 11000x0000.1 p2at 0.1\n");
+  EXPECT_EQ(carmen_error_of(r), "bad3.log:2: expected timestamp at field 8, got '11000x0000.1'");
 }
 
 // What a hostile or broken file gets (was and is; checked when foreign_log_fuzz was added): a
@@ -252,31 +253,33 @@ TEST(CarmenImport, MalformedSonarNamesFileAndLine) {
 // directory or a FIFO is refused before it is opened (a FIFO would wait for a writer).
 TEST(CarmenImport, HostileFilesAreRefusedNamingFileAndLine) {
   const std::string overlong = kOdom1 + "SONAR 0.2 1 " + std::string((1u << 20) + 1, '1');
-  EXPECT_EQ(error_of(write_log("long.log", overlong)),
+  EXPECT_EQ(carmen_error_of(carmen_log("long.log", overlong)),
             "long.log:2: line longer than 1048576 bytes: not a text log");
   const std::pair<std::string, std::string> numbers[] = {
       {"nan", "nan"}, {"-inf", "-inf"}, {"1e400", "1e400"}, {std::string("1\0.5", 4), "1\\x00.5"}};
   for (const auto& [v, quoted] : numbers) {
-    EXPECT_EQ(error_of(write_log("n.log", kOdom1 + "ODOM " + v + " 0 0 0 0 0 1100000000.1 h 0\n")),
+    EXPECT_EQ(carmen_error_of(
+                  carmen_log("n.log", kOdom1 + "ODOM " + v + " 0 0 0 0 0 1100000000.1 h 0\n")),
               "n.log:2: expected x at field 2, got '" + quoted + "'");
-    EXPECT_EQ(error_of(write_log("s.log", kOdom1 + "SONAR 0.2 1 " + v +
-                                              " 0.147 0.136 1.570796 1100000000.05 h 0\n")),
+    EXPECT_EQ(carmen_error_of(carmen_log("s.log", kOdom1 + "SONAR 0.2 1 " + v +
+                                                      " 0.147 0.136 1.570796 1100000000.05 h 0\n")),
               "s.log:2: expected range at field 4, got '" + quoted + "'");
   }
   // A field too many was "at field 12, got 'end of line'".
-  EXPECT_EQ(error_of(write_log("x.log", kOdom1 + "ODOM 1 0 0 0 0 0 1100000000.1 h 0 extra\n")),
-            "x.log:2: ODOM has 10 fields where CARMEN writes 9 (x y theta tv rv accel timestamp "
-            "host logger_ts): field 11 'extra' is one too many");
-  EXPECT_EQ(error_of(write_log("c.log", kOdom1 + "SONAR 0.2 2147483648 1 1 1 1 h 0\n")),
+  EXPECT_EQ(
+      carmen_error_of(carmen_log("x.log", kOdom1 + "ODOM 1 0 0 0 0 0 1100000000.1 h 0 extra\n")),
+      "x.log:2: ODOM has 10 fields where CARMEN writes 9 (x y theta tv rv accel timestamp "
+      "host logger_ts): field 11 'extra' is one too many");
+  EXPECT_EQ(carmen_error_of(carmen_log("c.log", kOdom1 + "SONAR 0.2 2147483648 1 1 1 1 h 0\n")),
             "c.log:2: expected num_sonars (0..255) at field 3, got '2147483648'");
-  const fs::path dir = write_log("d.log", "").parent_path() / "a_directory.log";
+  const fs::path dir = carmen_log("d.log", "").parent_path() / "a_directory.log";
   fs::create_directories(dir);
   const fs::path fifo = dir.parent_path() / "a_fifo.log";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   for (const fs::path& p : {dir, fifo}) {
     const std::string want =
         p.filename().string() + ": not a regular file (a device, pipe or directory)";
-    EXPECT_EQ(error_of(p), want);
+    EXPECT_EQ(carmen_error_of(p), want);
     EXPECT_EQ(testing::import_error([](const fs::path& f) { return detect_log_format(f); }, p),
               want);
     EXPECT_EQ(testing::import_error([](const fs::path& f) { return import_player_log(f); }, p),

@@ -10,8 +10,8 @@
 namespace cogmap::render {
 namespace {
 
-constexpr double kViewMarginM = 1.0;  // room for the node discs around the outermost nodes
-constexpr double kMinViewSizeM = 4.0;
+constexpr double kGraphViewMarginM = 1.0;  // room for the node discs around the outermost nodes
+constexpr double kGraphMinViewSizeM = 4.0;
 constexpr double kNodeRadiusPx = 15.0;
 
 }  // namespace
@@ -43,7 +43,7 @@ void write_graph_figure(const std::vector<mapper::AsrNode>& nodes,
     bounds.add(e.exit_world);
     edge_lines.push_back(std::move(line));
   }
-  bounds = bounds.padded(kViewMarginM, kMinViewSizeM);
+  bounds = bounds.padded(kGraphViewMarginM, kGraphMinViewSizeM);
 
   const int title_h = title.empty() ? 0 : font.line_height_px(style.title_font_px) + 8;
   const FigureLayout layout = layout_figure(1, 1, !title.empty(), title_h, style);

@@ -11,8 +11,8 @@
 namespace cogmap::render {
 namespace {
 
-constexpr double kViewMarginM = 0.5;
-constexpr double kMinViewSizeM = 2.0;
+constexpr double kErrorMapViewMarginM = 0.5;
+constexpr double kErrorMapMinViewSizeM = 2.0;
 constexpr float kTrueWallWidthPx = 1.5f;  // thin: the coloured map must stay readable over it
 constexpr float kPieceWidthPx = 3.5f;     // wider than a map wall, so the colour shows
 
@@ -41,7 +41,7 @@ void write_map_error_figure(const MapErrorFigure& figure, const std::filesystem:
   Bounds bounds;
   bounds.add(figure.true_surfaces);
   bounds.add(figure.pieces);
-  bounds = bounds.padded(kViewMarginM, kMinViewSizeM);
+  bounds = bounds.padded(kErrorMapViewMarginM, kErrorMapMinViewSizeM);
 
   const int title_h = figure.title.empty() ? 0 : font.line_height_px(style.title_font_px) + 8;
   const FigureLayout layout = layout_figure(1, 1, !figure.title.empty(), title_h, style);

@@ -12,8 +12,8 @@
 namespace cogmap::render {
 namespace {
 
-constexpr double kViewMarginM = 0.5;   // white space around the data
-constexpr double kMinViewSizeM = 2.0;  // a lone point still gets a readable window
+constexpr double kMapViewMarginM = 0.5;   // white space around the data
+constexpr double kMapMinViewSizeM = 2.0;  // a lone point still gets a readable window
 constexpr double kStartDotRadiusPx = 4.5;
 
 struct MapPanel {
@@ -64,7 +64,7 @@ void write_map_figure(const MapFigure& figure, const std::filesystem::path& png,
   bounds.add(figure.true_path);
   bounds.add(figure.odometry_path);
   bounds.add(figure.estimated_path);
-  bounds = bounds.padded(kViewMarginM, kMinViewSizeM);
+  bounds = bounds.padded(kMapViewMarginM, kMapMinViewSizeM);
 
   const int title_h = figure.title.empty() ? 0 : font.line_height_px(style.title_font_px) + 8;
   const FigureLayout layout = layout_figure(2, 2, !figure.title.empty(), title_h, style);

@@ -13,9 +13,9 @@
 namespace cogmap::render {
 namespace {
 
-constexpr int kColumns = 4;           // 7 panels in 2 rows; the 8th slot stays white
-constexpr double kViewMarginM = 0.3;  // white space around the room
-constexpr double kMinViewSizeM = 1.0;
+constexpr int kColumns = 4;               // 7 panels in 2 rows; the 8th slot stays white
+constexpr double kRoomViewMarginM = 0.3;  // white space around the room
+constexpr double kRoomMinViewSizeM = 1.0;
 
 // Dark, distinguishable colours so neighbouring point runs (split at γ breaks) can be told apart.
 constexpr std::array<Rgb, 4> kRunColors = {Rgb{0.10f, 0.10f, 0.10f}, Rgb{0.75f, 0.10f, 0.45f},
@@ -75,7 +75,7 @@ void write_room_stages_figure(const mapper::AsrTrace& trace, const std::string& 
   data.add(trace.fitted);
   data.add(trace.rejected);
   data.add(trace.robot_path);
-  const Bounds bounds = data.padded(kViewMarginM, kMinViewSizeM);
+  const Bounds bounds = data.padded(kRoomViewMarginM, kRoomMinViewSizeM);
 
   const int title_h = title.empty() ? 0 : font.line_height_px(style.title_font_px) + 8;
   const FigureLayout layout = layout_figure(7, kColumns, !title.empty(), title_h, style);

@@ -26,7 +26,7 @@ using integration::read_file;
 using integration::source_dir;
 
 /// Runs two_rooms (the route) for 60 s with `overrides`, into a directory named `tag`.
-fs::path run(const std::string& tag, const std::vector<std::string>& overrides) {
+fs::path steering_run(const std::string& tag, const std::vector<std::string>& overrides) {
   std::vector<std::string> all{"duration_s=60", "output.figures=false"};
   all.insert(all.end(), overrides.begin(), overrides.end());
   const Experiment e = load_experiment(source_dir() / "experiments" / "two_rooms.yaml", all);
@@ -69,8 +69,8 @@ nlohmann::json metrics_without_timing(const fs::path& run_dir) {
 }
 
 TEST(SteeringEstimate, WithoutRefinementsThePlainEstimateIsTheEstimate) {
-  const fs::path a = run("estimate", {"controller.pose=estimate"});
-  const fs::path b = run("plain", {"controller.pose=plain_estimate"});
+  const fs::path a = steering_run("estimate", {"controller.pose=estimate"});
+  const fs::path b = steering_run("plain", {"controller.pose=plain_estimate"});
   for (const char* f : {"trajectory.csv", "map_segments.csv", "asr_graph.json"}) {
     EXPECT_EQ(read_file(a / f), read_file(b / f)) << f;
   }
@@ -83,9 +83,11 @@ TEST(SteeringEstimate, WithoutRefinementsThePlainEstimateIsTheEstimate) {
 
 TEST(SteeringEstimate, ScanMatchingMovesTheMapAndNotTheDrive) {
   const std::string match = "mapper.scan_match=true";
-  const fs::path plain = run("default", {"controller.pose=estimate"});
-  const fs::path matched_map = run("matched_map", {"controller.pose=plain_estimate", match});
-  const fs::path matched_steering = run("matched_steering", {"controller.pose=estimate", match});
+  const fs::path plain = steering_run("default", {"controller.pose=estimate"});
+  const fs::path matched_map =
+      steering_run("matched_map", {"controller.pose=plain_estimate", match});
+  const fs::path matched_steering =
+      steering_run("matched_steering", {"controller.pose=estimate", match});
   // Steered by the plain estimate, the robot drives exactly as without the matcher...
   EXPECT_EQ(columns(plain, kDriven), columns(matched_map, kDriven));
   // ... while the estimate written, and the map drawn with it, are the matcher's.

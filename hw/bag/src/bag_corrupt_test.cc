@@ -21,12 +21,12 @@ using bag::testing::SonarArrayVariant;
 using bag::testing::SonarForm;
 using bag::testing::TestBagWriter;
 
-fs::path temp_bag(const std::string& name) {
+fs::path corrupt_bag_path(const std::string& name) {
   return bag::testing::temp_bag("cogmap_bag_corrupt_test", name);
 }
 
 TEST(BagCorrupt, TruncatedFile) {
-  const fs::path path = temp_bag("truncated");
+  const fs::path path = corrupt_bag_path("truncated");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   fs::resize_file(path, fs::file_size(path) / 2);
   const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
@@ -39,7 +39,7 @@ TEST(BagCorrupt, TruncatedFile) {
 }
 
 TEST(BagCorrupt, CutInsideItsHeaderRecord) {
-  const fs::path path = temp_bag("cut_header");
+  const fs::path path = corrupt_bag_path("cut_header");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   fs::resize_file(path, 30);  // within the header record's fields (index_pos among them)
   const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
@@ -47,7 +47,7 @@ TEST(BagCorrupt, CutInsideItsHeaderRecord) {
 }
 
 TEST(BagCorrupt, GarbageInsideAChunk) {
-  const fs::path path = temp_bag("garbage");
+  const fs::path path = corrupt_bag_path("garbage");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   // Overwrite 64 bytes in the first third: message data and record headers, not the index.
   {
@@ -64,13 +64,13 @@ TEST(BagCorrupt, GarbageInsideAChunk) {
 }
 
 TEST(BagCorrupt, NotABagAtAll) {
-  const fs::path path = temp_bag("text");
+  const fs::path path = corrupt_bag_path("text");
   std::ofstream(path) << "#ROSBAG V2.0\nthis is not a bag\n";
   expect_contains(import_error(path, bag::testing::with_robot("p3dx")), "not a readable ROS 1 bag");
 }
 
 TEST(BagCorrupt, NamedTopicOfTheWrongType) {
-  const fs::path path = temp_bag("wrongtype");
+  const fs::path path = corrupt_bag_path("wrongtype");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   const std::string e =
       import_error(path, {.sonar_topic = "/RosAria/pose", .odom_topic = "", .robot = "p3dx"});
@@ -84,7 +84,7 @@ TEST(BagCorrupt, NamedTopicOfTheWrongType) {
 }
 
 TEST(BagCorrupt, NoSonarTopic) {
-  const fs::path path = temp_bag("nosonar");
+  const fs::path path = corrupt_bag_path("nosonar");
   {
     TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 10.0, 0, 0, 0);
@@ -93,7 +93,7 @@ TEST(BagCorrupt, NoSonarTopic) {
 }
 
 TEST(BagCorrupt, NoOdometry) {
-  const fs::path path = temp_bag("noodom");
+  const fs::path path = corrupt_bag_path("noodom");
   {
     TestBagWriter w(path.string());
     w.point_cloud("/RosAria/sonar", 10.0, {{1, 1}});
@@ -104,7 +104,7 @@ TEST(BagCorrupt, NoOdometry) {
 }
 
 TEST(BagCorrupt, AmbiguousSonarTopics) {
-  const fs::path path = temp_bag("ambiguous");
+  const fs::path path = corrupt_bag_path("ambiguous");
   {
     TestBagWriter w(path.string());
     w.odometry("/a/pose", 10.0, 0, 0, 0);
@@ -117,7 +117,7 @@ TEST(BagCorrupt, AmbiguousSonarTopics) {
 }
 
 TEST(BagCorrupt, TimeGoingBackwards) {
-  const fs::path path = temp_bag("backwards");
+  const fs::path path = corrupt_bag_path("backwards");
   {
     TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 10.0, 0, 0, 0);
@@ -131,7 +131,7 @@ TEST(BagCorrupt, TimeGoingBackwards) {
 }
 
 TEST(BagCorrupt, UnsetStamp) {
-  const fs::path path = temp_bag("unset");
+  const fs::path path = corrupt_bag_path("unset");
   {
     TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 10.0, 0, 0, 0);
@@ -143,7 +143,7 @@ TEST(BagCorrupt, UnsetStamp) {
 }
 
 TEST(BagCorrupt, TruncatedPointCloudMessage) {
-  const fs::path path = temp_bag("shortcloud");
+  const fs::path path = corrupt_bag_path("shortcloud");
   {
     TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 10.0, 0, 0, 0);
@@ -155,7 +155,7 @@ TEST(BagCorrupt, TruncatedPointCloudMessage) {
 }
 
 TEST(BagCorrupt, SonarArrayWithAnotherDefinition) {
-  const fs::path path = temp_bag("wrongdef");
+  const fs::path path = corrupt_bag_path("wrongdef");
   {
     TestBagWriter w(path.string());
     w.odometry("/pose", 10.0, 0, 0, 0);
@@ -168,7 +168,7 @@ TEST(BagCorrupt, SonarArrayWithAnotherDefinition) {
 }
 
 TEST(BagCorrupt, SonarArrayTruncated) {
-  const fs::path path = temp_bag("shortarray");
+  const fs::path path = corrupt_bag_path("shortarray");
   {
     TestBagWriter w(path.string());
     w.odometry("/pose", 10.0, 0, 0, 0);
@@ -179,7 +179,7 @@ TEST(BagCorrupt, SonarArrayTruncated) {
 }
 
 TEST(BagCorrupt, MoreTransducersThanTheModel) {
-  const fs::path path = temp_bag("toomany");
+  const fs::path path = corrupt_bag_path("toomany");
   {
     TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 10.0, 0, 0, 0);
@@ -204,7 +204,7 @@ void write_pose_bag(const fs::path& path, double x1_m) {
 
 TEST(BagCorrupt, PoseBeyondTheLogCoordinateLimit) {
   for (const double x : {5000.0, 1e30, -1e30}) {
-    const fs::path path = temp_bag("far_pose");
+    const fs::path path = corrupt_bag_path("far_pose");
     write_pose_bag(path, x);
     const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
     expect_contains(e, path.string() +
@@ -214,14 +214,14 @@ TEST(BagCorrupt, PoseBeyondTheLogCoordinateLimit) {
 }
 
 TEST(BagCorrupt, OdometryJumpBeyondTheRobotsSpeed) {
-  const fs::path path = temp_bag("jump");
+  const fs::path path = corrupt_bag_path("jump");
   write_pose_bag(path, 50.0);
   const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
   expect_contains(e, path.string() + ": topic /RosAria/pose, message 1: odometry jumps 50 m in ");
 }
 
 TEST(BagCorrupt, TfPoseBeyondTheLogCoordinateLimit) {
-  const fs::path path = temp_bag("far_tf");
+  const fs::path path = corrupt_bag_path("far_tf");
   {
     TestBagWriter w(path.string());
     w.tf("/tf", 10.0, 0, 0, 0);
@@ -235,7 +235,7 @@ TEST(BagCorrupt, TfPoseBeyondTheLogCoordinateLimit) {
 }
 
 TEST(BagCorrupt, RobotModelMissingOrUnknown) {
-  const fs::path path = temp_bag("norobot");
+  const fs::path path = corrupt_bag_path("norobot");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   expect_contains(import_error(path, BagImportOptions{}),
                   "pass --robot (one of p2at, p2at8, p3at, p3dx, p2dx, p2de, peoplebot)");
@@ -252,7 +252,7 @@ namespace {
 // Corruption anywhere in a bag ends in a LogError or, where it only changed numbers, in a
 // result; never in a crash or another exception type. 40 seeded positions over the file.
 TEST(BagCorrupt, SeededCorruptionIsRefusedOrRead) {
-  const fs::path clean = temp_bag("seeded_clean");
+  const fs::path clean = corrupt_bag_path("seeded_clean");
   bag::testing::write_corridor_bag(clean.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   const auto size = fs::file_size(clean);
   std::uint64_t state = 12345;
@@ -260,7 +260,7 @@ TEST(BagCorrupt, SeededCorruptionIsRefusedOrRead) {
   for (int i = 0; i < 40; ++i) {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     const auto offset = static_cast<std::streamoff>((state >> 33) % size);
-    const fs::path path = temp_bag("seeded");
+    const fs::path path = corrupt_bag_path("seeded");
     fs::copy_file(clean, path, fs::copy_options::overwrite_existing);
     {
       std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);

@@ -19,12 +19,12 @@ using bag::testing::CorridorCounts;
 using bag::testing::OdomForm;
 using bag::testing::SonarForm;
 
-fs::path temp_bag(const std::string& name) {
+fs::path import_bag_path(const std::string& name) {
   return bag::testing::temp_bag("cogmap_bag_test", name);
 }
 
 ImportedBag import_corridor(SonarForm sonar, OdomForm odom, const std::string& name) {
-  const fs::path path = temp_bag(name);
+  const fs::path path = import_bag_path(name);
   bag::testing::write_corridor_bag(path.string(), sonar, odom);
   return import_ros_bag(path, bag::testing::with_robot("p3dx"));
 }
@@ -110,7 +110,7 @@ TEST(BagImport, TfOnlyOdometry) {
 
 TEST(BagImport, CompressedBagsReadAlike) {
   for (const auto c : {bag::testing::Compression::kBz2, bag::testing::Compression::kLz4}) {
-    const fs::path path = temp_bag(c == bag::testing::Compression::kBz2 ? "bz2" : "lz4");
+    const fs::path path = import_bag_path(c == bag::testing::Compression::kBz2 ? "bz2" : "lz4");
     bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry, c);
     const ImportedBag b = import_ros_bag(path, bag::testing::with_robot("p3dx"));
     expect_corridor_counts(b.stats);
@@ -119,7 +119,7 @@ TEST(BagImport, CompressedBagsReadAlike) {
 }
 
 TEST(BagImport, ExplicitTopicsOverrideDetection) {
-  const fs::path path = temp_bag("explicit");
+  const fs::path path = import_bag_path("explicit");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kBothClouds, OdomForm::kOdometry);
   const ImportedBag b = import_ros_bag(
       path, {.sonar_topic = "/RosAria/sonar_pointcloud2", .odom_topic = "", .robot = "p3dx"});
@@ -128,7 +128,7 @@ TEST(BagImport, ExplicitTopicsOverrideDetection) {
 }
 
 TEST(BagImport, HeadingInterpolatesTheShortWayAcrossPi) {
-  const fs::path path = temp_bag("wrap");
+  const fs::path path = import_bag_path("wrap");
   {
     bag::testing::TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 10.0, 0.0, 0.0, 3.0);
@@ -145,7 +145,7 @@ TEST(BagImport, HeadingInterpolatesTheShortWayAcrossPi) {
 }
 
 TEST(BagImport, ReadingsOutsideTheOdometryAreRejected) {
-  const fs::path path = temp_bag("outside");
+  const fs::path path = import_bag_path("outside");
   {
     bag::testing::TestBagWriter w(path.string());
     w.point_cloud("/RosAria/sonar", 9.95, {{0.069, 1.0}});  // before the first pose
@@ -166,7 +166,7 @@ TEST(BagImport, ReadingsOutsideTheOdometryAreRejected) {
 
 TEST(BagImport, AGenuineRepeatIsNotANewReading) {
   // The rule the issue sets: a value equal to the last message's is the old reading.
-  const fs::path path = temp_bag("repeat");
+  const fs::path path = import_bag_path("repeat");
   {
     bag::testing::TestBagWriter w(path.string());
     w.odometry("/sonar_pose", 10.0, 0.0, 0.0, 0.0);
@@ -184,7 +184,7 @@ TEST(BagImport, AGenuineRepeatIsNotANewReading) {
 }
 
 TEST(BagImport, RangesFromFourPointNineMetresAreNoEcho) {
-  const fs::path path = temp_bag("noecho");
+  const fs::path path = import_bag_path("noecho");
   {
     bag::testing::TestBagWriter w(path.string());
     w.odometry("/pose", 10.0, 0.0, 0.0, 0.0);
@@ -205,11 +205,11 @@ TEST(BagImport, RangesFromFourPointNineMetresAreNoEcho) {
 }
 
 TEST(BagImport, RecognisesBagsByTheirMagic) {
-  const fs::path path = temp_bag("magic");
+  const fs::path path = import_bag_path("magic");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   EXPECT_TRUE(looks_like_ros_bag(path));
   EXPECT_FALSE(looks_like_ros_bag(fs::path(COGMAP_HW_TESTDATA) / "sample.carmen.log"));
-  EXPECT_FALSE(looks_like_ros_bag(temp_bag("does_not_exist_x")));
+  EXPECT_FALSE(looks_like_ros_bag(import_bag_path("does_not_exist_x")));
   EXPECT_TRUE(ros_bag_support());
 }
 

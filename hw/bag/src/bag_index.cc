@@ -21,13 +21,11 @@ constexpr std::uint32_t kMaxConnectionHeaderBytes = 16u << 20;
   throw BagReadError(what + ": the bag's index is damaged");
 }
 
-std::string byte(std::uint64_t pos) { return "byte " + std::to_string(pos); }
-
 // "a chunk" -> "the chunk at byte 123".
 std::string the(const Record& r) {
   std::string name = records::op_name(r.op);
   name = "the " + name.substr(name.find(' ') + 1);
-  return name + " at " + byte(r.pos);
+  return name + " at " + byte_name(r.pos);
 }
 
 // The records between the bag header record and the index: chunks, each followed by its index
@@ -55,7 +53,7 @@ Layout walk_chunks(const records::Bytes& file, const Record& bag_header, std::ui
     std::string why;
     const auto r = records::read_record(file, pos, index_pos, why);
     if (!r) {
-      layout.why = byte(pos) + " holds " + why;
+      layout.why = byte_name(pos) + " holds " + why;
       break;
     }
     layout.records.emplace(pos, *r);
@@ -121,8 +119,8 @@ void read_connections(const records::Bytes& file, const std::vector<Record>& rec
     if (fresh || (first.topic == c.topic && first.header == c.header)) continue;
     const bool same = first.topic == c.topic && first.type == c.type;
     damaged("connection " + std::to_string(c.id) +
-            " is declared twice: by the connection record at " + byte(first.pos) + " as " +
-            first.topic + " (" + first.type + ") and by the one at " + byte(c.pos) + " as " +
+            " is declared twice: by the connection record at " + byte_name(first.pos) + " as " +
+            first.topic + " (" + first.type + ") and by the one at " + byte_name(c.pos) + " as " +
             c.topic + " (" + c.type + (same ? ", another connection header" : "") + ")");
   }
 }
@@ -189,12 +187,13 @@ BagIndexData read_index_data(const records::Bytes& file, const Record& r, const 
 // Where a chunk info's chunk_pos leads: the chunk record there, or an error.
 const Record& chunk_at(const BagChunkInfo& info, const Layout& layout, const BagIndex& index) {
   const std::uint64_t p = info.chunk_pos;
-  const std::string where =
-      "the chunk info record at " + byte(info.pos) + " puts its chunk at " + byte(p) + ", ";
+  const std::string where = "the chunk info record at " + byte_name(info.pos) +
+                            " puts its chunk at " + byte_name(p) + ", ";
   if (p >= index.file_size) {
     damaged(where + "past the end of the file (" + std::to_string(index.file_size) + " bytes)");
   }
-  if (p >= index.index_pos) damaged(where + "at or past the index (" + byte(index.index_pos) + ")");
+  if (p >= index.index_pos)
+    damaged(where + "at or past the index (" + byte_name(index.index_pos) + ")");
   const auto it = layout.records.find(p);
   if (it == layout.records.end()) {
     if (p >= layout.stop) damaged(where + "where the records no longer read (" + layout.why + ")");
@@ -233,7 +232,7 @@ BagChunk read_chunk(const records::Bytes& file, const BagChunkInfo& info, const 
             " bytes a chunk may unpack to");
   }
   for (const auto& [conn, n] : info.counts) {
-    require_declared(index, conn, "the chunk info record at " + byte(info.pos) + " names ",
+    require_declared(index, conn, "the chunk info record at " + byte_name(info.pos) + " names ",
                      " (" + count_of(n, "message") + " in " + the(r) + ")");
   }
   // rosbag reads as many index data records after the chunk as its chunk info lists connections.
@@ -241,11 +240,11 @@ BagChunk read_chunk(const records::Bytes& file, const BagChunkInfo& info, const 
   for (std::size_t i = 0; i < info.counts.size(); ++i) {
     const auto it = layout.records.find(next);
     if (it == layout.records.end() || it->second.op != records::kIndexData) {
-      damaged("the chunk info record at " + byte(info.pos) + " lists " +
+      damaged("the chunk info record at " + byte_name(info.pos) + " lists " +
               count_of(info.counts.size(), "connection") + " for " + the(r) + ", but " +
               (i == 0 ? "no index data record follows it"
                       : "only " + count_of(i, "index data record") + " follow it") +
-              " (" + byte(next) + " holds " + layout.what_is_at(next, index.index_pos) + ")");
+              " (" + byte_name(next) + " holds " + layout.what_is_at(next, index.index_pos) + ")");
     }
     chunk.index.push_back(read_index_data(file, it->second, index, r));
     next = it->second.end();
@@ -287,8 +286,8 @@ std::optional<BagIndex> read_bag_index(const records::Bytes& file) {
   }
   index.index_pos = *index_pos;
   if (index.index_pos < header->end()) {
-    damaged("the bag header record puts the index at " + byte(index.index_pos) +
-            ", inside the bag header record (it ends at " + byte(header->end()) + ")");
+    damaged("the bag header record puts the index at " + byte_name(index.index_pos) +
+            ", inside the bag header record (it ends at " + byte_name(header->end()) + ")");
   }
   const Layout layout = walk_chunks(file, *header, index.index_pos);
 
@@ -303,16 +302,16 @@ std::optional<BagIndex> read_bag_index(const records::Bytes& file) {
     } else if (r && r->op == records::kChunkInfo) {
       infos.push_back(*r);
     } else {
-      then = ", then " + byte(pos) + " holds " + (r ? records::op_name(r->op) : why);
+      then = ", then " + byte_name(pos) + " holds " + (r ? records::op_name(r->op) : why);
       break;
     }
     pos = r->end();
   }
   if (connections.size() != *conn_count || infos.size() != *chunk_count) {
     damaged("the bag header record counts " + count_of(*conn_count, "connection") + " and " +
-            count_of(*chunk_count, "chunk") + ", but its index (from " + byte(index.index_pos) +
-            (then.empty() ? " to the end of the file" : "") + ") holds " +
-            count_of(connections.size(), "connection record") + " and " +
+            count_of(*chunk_count, "chunk") + ", but its index (from " +
+            byte_name(index.index_pos) + (then.empty() ? " to the end of the file" : "") +
+            ") holds " + count_of(connections.size(), "connection record") + " and " +
             count_of(infos.size(), "chunk info record") + then);
   }
   read_connections(file, connections, index);
@@ -322,9 +321,9 @@ std::optional<BagIndex> read_bag_index(const records::Bytes& file) {
   for (const BagChunkInfo& info : index.chunk_infos) {
     const auto [it, fresh] = named.emplace(info.chunk_pos, info.pos);
     if (!fresh) {
-      damaged("the chunk info record at " + byte(info.pos) + " puts its chunk at " +
-              byte(info.chunk_pos) + ", a chunk the chunk info record at " + byte(it->second) +
-              " names already");
+      damaged("the chunk info record at " + byte_name(info.pos) + " puts its chunk at " +
+              byte_name(info.chunk_pos) + ", a chunk the chunk info record at " +
+              byte_name(it->second) + " names already");
     }
     index.chunks.push_back(read_chunk(file, info, layout, index));
   }

@@ -16,6 +16,9 @@
 
 namespace cogmap::hw::bag {
 
+// "byte 123": how an error names a position in the bag file.
+inline std::string byte_name(std::uint64_t pos) { return "byte " + std::to_string(pos); }
+
 struct BagConnection {
   std::uint32_t id = 0;
   std::uint64_t pos = 0;            ///< the connection record in the index

@@ -17,8 +17,6 @@
 namespace cogmap::hw::bag {
 namespace {
 
-std::string byte(std::uint64_t pos) { return "byte " + std::to_string(pos); }
-
 // "topic T, message K" for every entry of every chunk's index, K counted in the order
 // rosbag::View reads a topic: by index time, ties in the order the index lists them.
 class MessageNames {
@@ -68,7 +66,7 @@ struct ChunkData {
 
 std::string the_chunk(const BagChunk& c) {
   return std::string(c.compression == "none" ? "" : c.compression + " ") + "chunk at " +
-         byte(c.record.pos);
+         byte_name(c.record.pos);
 }
 
 ChunkData unpack(const records::Bytes& file, const BagChunk& chunk) {
@@ -132,8 +130,8 @@ class ChunkCheck {
   // "at byte B (offset O in the chunk at byte P)", or "at offset O of the bz2 chunk at ...".
   std::string at(std::uint64_t offset) const {
     if (chunk_.compression == "none") {
-      return "at " + byte(chunk_.record.data_pos + offset) + " (offset " + std::to_string(offset) +
-             " in the " + the_chunk(chunk_) + ")";
+      return "at " + byte_name(chunk_.record.data_pos + offset) + " (offset " +
+             std::to_string(offset) + " in the " + the_chunk(chunk_) + ")";
     }
     return "at offset " + std::to_string(offset) + " of the " + the_chunk(chunk_) + " (unpacked)";
   }
@@ -168,7 +166,7 @@ class ChunkCheck {
     const std::uint32_t offset = index.entries[e].offset;
     // The messages are built only for an error: a chunk lists thousands of messages.
     const auto puts = [&] {
-      return names_.of(number_, r, e) + ": the index data record at " + byte(index.pos) +
+      return names_.of(number_, r, e) + ": the index data record at " + byte_name(index.pos) +
              " puts it at offset " + std::to_string(offset) + " of the " + the_chunk(chunk_) + ", ";
     };
     if (offset >= chunk_.size) {
@@ -231,8 +229,9 @@ class ChunkCheck {
                                              : std::string("no connection (no conn field)");
       damaged("the " + the_chunk(chunk_) + " holds a message data record of " + conn +
               " at offset " + std::to_string(x.offset) +
-              (chunk_.compression == "none" ? " (" + byte(chunk_.record.data_pos + x.offset) + ")"
-                                            : std::string()) +
+              (chunk_.compression == "none"
+                   ? " (" + byte_name(chunk_.record.data_pos + x.offset) + ")"
+                   : std::string()) +
               " that its index does not list (it lists " + std::to_string(lists) +
               " of the chunk's " + std::to_string(held) + ")");
     }

@@ -29,7 +29,7 @@ using bag::testing::RawRecord;
 using bag::testing::SonarArrayVariant;
 using bag::testing::TestBagWriter;
 
-fs::path temp_bag(const std::string& name) {
+fs::path length_bag_path(const std::string& name) {
   return bag::testing::temp_bag("cogmap_bag_message_length_test", name);
 }
 
@@ -39,7 +39,7 @@ std::uint32_t get_u32(const std::string& data, std::size_t at) {
   return v;
 }
 
-void put_u32(std::string& data, std::size_t at, std::uint32_t v) {
+void put_u32_at(std::string& data, std::size_t at, std::uint32_t v) {
   ASSERT_LE(at + 4, data.size());
   std::memcpy(data.data() + at, &v, 4);
 }
@@ -90,7 +90,7 @@ std::string quick_error(const fs::path& path, const std::string& robot) {
 // Odometry and RosAria-style sonar; `sonar` writes the two sonar messages.
 fs::path pose_and_sonar_bag(const std::string& name,
                             const std::function<void(TestBagWriter&, double)>& sonar) {
-  const fs::path path = temp_bag(name);
+  const fs::path path = length_bag_path(name);
   {
     TestBagWriter w(path.string());
     for (int k = 0; k < 3; ++k) w.odometry("/RosAria/pose", 10.0 + 0.1 * k, 0.01 * k, 0, 0);
@@ -112,7 +112,7 @@ TEST(BagMessageLength, PointCloudPointsClaimingTwoBillionElements) {
   // Was "topic /RosAria/sonar, message 1: std::bad_alloc" (24 GiB asked for).
   const fs::path path = cloud_bag("points_2g");
   damage_message(path, "/RosAria/sonar", 1,
-                 [](std::string& d) { put_u32(d, after_header(d), 0x7fffffff); });
+                 [](std::string& d) { put_u32_at(d, after_header(d), 0x7fffffff); });
   // One point (12 bytes) and the channels' length (4) follow the points' length.
   expect_contains(quick_error(path, "p3dx"),
                   path.string() +
@@ -125,7 +125,7 @@ TEST(BagMessageLength, PointCloudPointsClaimingAGigabyte) {
   // 1.2 GB: roscpp_serialization allocated it and zeroed it before it found the message short.
   const fs::path path = cloud_bag("points_1g");
   damage_message(path, "/RosAria/sonar", 0,
-                 [](std::string& d) { put_u32(d, after_header(d), 100'000'000); });
+                 [](std::string& d) { put_u32_at(d, after_header(d), 100'000'000); });
   expect_contains(quick_error(path, "p3dx"),
                   ": topic /RosAria/sonar, message 0: its points array claims 100000000 elements "
                   "(1200000000 bytes) but the message holds only 16 more bytes");
@@ -139,7 +139,7 @@ TEST(BagMessageLength, PointCloud2DataClaimingOnePointFiveGigabytes) {
   damage_message(path, "/RosAria/sonar_pointcloud2", 1, [](std::string& d) {
     // height, width, fields (3 of name length, "x", offset, datatype, count), is_bigendian,
     // point_step, row_step, then data's length.
-    put_u32(d, after_header(d) + 8 + 4 + 3 * 14 + 1 + 4 + 4, 1'500'000'000);
+    put_u32_at(d, after_header(d) + 8 + 4 + 3 * 14 + 1 + 4 + 4, 1'500'000'000);
   });
   // The data (one point of 12 bytes) and is_dense follow.
   expect_contains(quick_error(path, "p3dx"),
@@ -154,7 +154,7 @@ TEST(BagMessageLength, PointCloud2FieldsClaimingTwoBillionElements) {
     w.point_cloud2("/RosAria/sonar_pointcloud2", t, {{1.0, t}});
   });
   damage_message(path, "/RosAria/sonar_pointcloud2", 0,
-                 [](std::string& d) { put_u32(d, after_header(d) + 8, 0x7fffffff); });
+                 [](std::string& d) { put_u32_at(d, after_header(d) + 8, 0x7fffffff); });
   expect_contains(quick_error(path, "p3dx"),
                   ": topic /RosAria/sonar_pointcloud2, message 0: its fields array claims "
                   "2147483647 elements (at least 27917287411 bytes) but the message holds only ");
@@ -163,7 +163,7 @@ TEST(BagMessageLength, PointCloud2FieldsClaimingTwoBillionElements) {
 TEST(BagMessageLength, OdometryChildFrameIdClaimingTwoGigabytes) {
   const fs::path path = cloud_bag("odometry_2g");
   damage_message(path, "/RosAria/pose", 1,
-                 [](std::string& d) { put_u32(d, after_header(d), 0x7fffffff); });
+                 [](std::string& d) { put_u32_at(d, after_header(d), 0x7fffffff); });
   // "base_link", the pose (344 bytes) and the twist (336) follow.
   expect_contains(quick_error(path, "p3dx"),
                   path.string() +
@@ -174,14 +174,14 @@ TEST(BagMessageLength, OdometryChildFrameIdClaimingTwoGigabytes) {
 
 TEST(BagMessageLength, OdometryHeaderFrameIdClaimingMoreThanItHolds) {
   const fs::path path = cloud_bag("odometry_frame_id");
-  damage_message(path, "/RosAria/pose", 2, [](std::string& d) { put_u32(d, 12, 1000); });
+  damage_message(path, "/RosAria/pose", 2, [](std::string& d) { put_u32_at(d, 12, 1000); });
   expect_contains(quick_error(path, "p3dx"),
                   ": topic /RosAria/pose, message 2: its header.frame_id string claims 1000 bytes "
                   "but the message holds only 697 more bytes: the message is damaged");
 }
 
 fs::path tf_bag(const std::string& name) {
-  const fs::path path = temp_bag(name);
+  const fs::path path = length_bag_path(name);
   {
     TestBagWriter w(path.string());
     for (int k = 0; k < 3; ++k) w.tf("/tf", 10.0 + 0.1 * k, 0.01 * k, 0, 0);
@@ -196,7 +196,7 @@ TEST(BagMessageLength, TfTransformsClaimingTwoBillionElements) {
   // Was std::bad_alloc (2^31 TransformStamped asked for); a length of 10^7 allocated and
   // constructed 1.4 GB of them.
   const fs::path path = tf_bag("transforms_2g");
-  damage_message(path, "/tf", 1, [](std::string& d) { put_u32(d, 0, 0x7fffffff); });
+  damage_message(path, "/tf", 1, [](std::string& d) { put_u32_at(d, 0, 0x7fffffff); });
   // One transform: seq and stamp (12), "odom" (8), "base_link" (13) and the transform (56).
   expect_contains(quick_error(path, "p3dx"),
                   path.string() +
@@ -208,7 +208,7 @@ TEST(BagMessageLength, TfTransformsClaimingTwoBillionElements) {
 TEST(BagMessageLength, TfNestedChildFrameIdClaimingMoreThanItHolds) {
   const fs::path path = tf_bag("transform_child");
   damage_message(path, "/tf", 0, [](std::string& d) {
-    put_u32(d, after_header(d, 4), 0xfffffff0u);  // transforms[0].child_frame_id
+    put_u32_at(d, after_header(d, 4), 0xfffffff0u);  // transforms[0].child_frame_id
   });
   expect_contains(quick_error(path, "p3dx"),
                   ": topic /tf, message 0: its transforms[0].child_frame_id string claims "
@@ -218,7 +218,7 @@ TEST(BagMessageLength, TfNestedChildFrameIdClaimingMoreThanItHolds) {
 
 TEST(BagMessageLength, SonarArrayRangesClaimingTwoBillionElements) {
   // p2os's SonarArray has cogmap's own decoder (sonar_array_decoder.cc): it checked this already.
-  const fs::path path = temp_bag("sonar_array_2g");
+  const fs::path path = length_bag_path("sonar_array_2g");
   {
     TestBagWriter w(path.string());
     w.odometry("/pose", 10.0, 0, 0, 0);
@@ -227,7 +227,7 @@ TEST(BagMessageLength, SonarArrayRangesClaimingTwoBillionElements) {
   }
   ASSERT_EQ(import_ros_bag(path, bag::testing::with_robot("p2at")).log.frames.size(), 1u);
   damage_message(path, "/sonar", 0,
-                 [](std::string& d) { put_u32(d, after_header(d) + 4, 0x7fffffff); });
+                 [](std::string& d) { put_u32_at(d, after_header(d) + 4, 0x7fffffff); });
   expect_contains(quick_error(path, "p2at"),
                   path.string() +
                       ": topic /sonar, message 0: SonarArray truncated: 2147483647 ranges need "
@@ -240,7 +240,7 @@ TEST(BagMessageLength, SonarArrayRangesClaimingTwoBillionElements) {
 // reading is a stand-in plugin's (oom_test_plugin.cc) that asks for 8 GiB at message 2.
 TEST(BagMessageLength, RunningOutOfTheReadersMemoryNamesTheMessage) {
   if (!bag::reader_memory_is_limited()) GTEST_SKIP() << "no limit in a sanitizer build";
-  const fs::path path = temp_bag("oom");
+  const fs::path path = length_bag_path("oom");
   {
     TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 10.0, 0, 0, 0);

@@ -25,7 +25,7 @@ using bag::testing::SonarForm;
 using bag::testing::TestBagWriter;
 using bag::testing::Xy;
 
-fs::path temp_bag(const std::string& name) {
+fs::path real_world_bag_path(const std::string& name) {
   return bag::testing::temp_bag("cogmap_bag_real_world_test", name);
 }
 
@@ -64,7 +64,7 @@ void make_unindexed(const fs::path& path) {
 // A recording killed before rosbag wrote its index said only "Bag unindexed"; now it says what
 // happened and what rebuilds it.
 TEST(BagRealWorld, UnindexedBagSaysHowToRebuildTheIndex) {
-  const fs::path path = temp_bag("unindexed");
+  const fs::path path = real_world_bag_path("unindexed");
   bag::testing::write_corridor_bag(path.string(), SonarForm::kPointCloud, OdomForm::kOdometry);
   make_unindexed(path);
   const std::string e = import_error(path, bag::testing::with_robot("p3dx"));
@@ -78,7 +78,7 @@ TEST(BagRealWorld, UnindexedBagSaysHowToRebuildTheIndex) {
 TEST(BagRealWorld, UnnormalisedQuaternionKeepsItsHeading) {
   for (const double scale : {1.05, 0.95}) {
     for (const double yaw : {std::numbers::pi / 2, -2.5, 0.3}) {
-      const fs::path path = temp_bag("quaternion");
+      const fs::path path = real_world_bag_path("quaternion");
       {
         TestBagWriter w(path.string());
         const double qz = scale * std::sin(yaw / 2), qw = scale * std::cos(yaw / 2);
@@ -100,7 +100,7 @@ TEST(BagRealWorld, UnnormalisedQuaternionKeepsItsHeading) {
 // message of too many points ends the reading: here message 0, before the undecodable message 1
 // (the old reader reached message 1 and reported that instead).
 TEST(BagRealWorld, CloudLargerThanTheRingIsRefusedAtItsFirstMessage) {
-  const fs::path path = temp_bag("camera_cloud");
+  const fs::path path = real_world_bag_path("camera_cloud");
   {
     TestBagWriter w(path.string());
     w.odometry("/odom", 100.0, 0, 0, 0);
@@ -117,7 +117,7 @@ TEST(BagRealWorld, CloudLargerThanTheRingIsRefusedAtItsFirstMessage) {
 
 // A p2os SonarArray of a PeopleBot's 32 transducers, for the models with 16: the same bound.
 TEST(BagRealWorld, ThirtyTwoSonarsNeedAThirtyTwoSonarModel) {
-  const fs::path path = temp_bag("peoplebot");
+  const fs::path path = real_world_bag_path("peoplebot");
   {
     TestBagWriter w(path.string());
     for (int k = 0; k < 20; ++k) {
@@ -140,7 +140,7 @@ TEST(BagRealWorld, ThirtyTwoSonarsNeedAThirtyTwoSonarModel) {
 // (robot uptime against Unix time) the first pose failed a time_s limit it never explained.
 TEST(BagRealWorld, SonarAndOdometryOnTwoClocksAreRefused) {
   for (const double sonar_t0 : {1.7e9 - 3600.0, 1000.0, 1.7e9 + 3600.0}) {
-    const fs::path path = temp_bag("two_clocks");
+    const fs::path path = real_world_bag_path("two_clocks");
     {
       TestBagWriter w(path.string());
       for (int k = 0; k < 20; ++k) {
@@ -160,7 +160,7 @@ TEST(BagRealWorld, SonarAndOdometryOnTwoClocksAreRefused) {
 
 // Overlapping stamps, but every sonar message falls in a gap of the odometry: no frame either.
 TEST(BagRealWorld, SonarOnlyInOdometryGapsIsRefused) {
-  const fs::path path = temp_bag("gaps");
+  const fs::path path = real_world_bag_path("gaps");
   {
     TestBagWriter w(path.string());
     w.odometry("/RosAria/pose", 100.0, 0, 0, 0);
@@ -181,7 +181,7 @@ TEST(BagRealWorld, SonarOnlyInOdometryGapsIsRefused) {
 // 30 cm apart and were interpolated into frames, silently. Now refused, naming both.
 TEST(BagRealWorld, OdometryFromTwoPublishersTakingTurnsIsRefused) {
   for (const bool tf : {false, true}) {
-    const fs::path path = temp_bag(tf ? "two_tf_publishers" : "two_odometry_publishers");
+    const fs::path path = real_world_bag_path(tf ? "two_tf_publishers" : "two_odometry_publishers");
     const std::string topic = tf ? "/tf" : "/RosAria/pose";
     {
       TestBagWriter w(path.string());
@@ -207,7 +207,7 @@ TEST(BagRealWorld, OdometryFromTwoPublishersTakingTurnsIsRefused) {
 // What passed as it was, kept: the driver restarted mid-recording (a second connection, another
 // callerid, on both topics), a latched odometry publisher, stamps near the end of ROS time.
 TEST(BagRealWorld, DriverRestartedMidRecordingReadsAsOneStream) {
-  const fs::path path = temp_bag("restart");
+  const fs::path path = real_world_bag_path("restart");
   {
     TestBagWriter w(path.string());
     for (int k = 0; k < 40; ++k) {
@@ -230,7 +230,7 @@ TEST(BagRealWorld, DriverRestartedMidRecordingReadsAsOneStream) {
 }
 
 TEST(BagRealWorld, StampsNearTheEndOfRosTime) {
-  const fs::path path = temp_bag("late");
+  const fs::path path = real_world_bag_path("late");
   {
     TestBagWriter w(path.string());
     for (int k = 0; k < 5; ++k) {

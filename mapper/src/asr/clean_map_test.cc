@@ -7,7 +7,7 @@
 namespace cogmap::mapper {
 namespace {
 
-constexpr double kEpsilon = 7.0;
+constexpr double kCleanEpsilon = 7.0;  // ε, Table 4.1
 
 HistogramGrid empty_grid(int width, int height) {
   return HistogramGrid(GridGeometry(0.0, 0.0, 100.0, width, height), kHistogramFloor);
@@ -19,7 +19,7 @@ std::string occupancy_picture(const HistogramGrid& grid) {
   for (int y = grid.height() - 1; y >= 0; --y) {
     for (int x = 0; x < grid.width(); ++x) {
       const float v = grid.get({x, y});
-      out += v == kRobotPathValue ? 'P' : (v > kEpsilon ? '#' : '.');
+      out += v == kRobotPathValue ? 'P' : (v > kCleanEpsilon ? '#' : '.');
     }
     out += '\n';
   }
@@ -36,7 +36,7 @@ TEST(CleanMap, KeepsTheFaceOfAThickWallAndDropsWhatItHides) {
   grid.set({4, 8}, 15.0f);  // a blob behind the wall
   grid.set({5, 8}, 9.0f);
   grid.set({5, 9}, 15.0f);
-  const HistogramGrid cleaned = clean_map(grid, kEpsilon, 50.0);
+  const HistogramGrid cleaned = clean_map(grid, kCleanEpsilon, 50.0);
   EXPECT_EQ(occupancy_picture(cleaned),
             "............\n"
             "............\n"
@@ -61,26 +61,26 @@ TEST(CleanMap, CellsBeyondMaxRangeAreRemoved) {
   grid.set({0, 1}, kRobotPathValue);
   grid.set({8, 2}, 15.0f);   // about 8 cells away
   grid.set({20, 0}, 15.0f);  // about 20 cells away, nothing in between but it is too far
-  const HistogramGrid cleaned = clean_map(grid, kEpsilon, 10.0);
+  const HistogramGrid cleaned = clean_map(grid, kCleanEpsilon, 10.0);
   EXPECT_EQ(cleaned.get({8, 2}), 15.0f);
   EXPECT_EQ(cleaned.get({20, 0}), 0.0f);
   // With enough range the far cell is seen (its ray runs along rows 0 and 1).
-  EXPECT_EQ(clean_map(grid, kEpsilon, 25.0).get({20, 0}), 15.0f);
+  EXPECT_EQ(clean_map(grid, kCleanEpsilon, 25.0).get({20, 0}), 15.0f);
 }
 
 TEST(CleanMap, RangeIsInclusive) {
   HistogramGrid grid = empty_grid(10, 1);
   grid.set({0, 0}, kRobotPathValue);
   grid.set({5, 0}, 15.0f);
-  EXPECT_EQ(clean_map(grid, kEpsilon, 5.0).get({5, 0}), 15.0f);
-  EXPECT_EQ(clean_map(grid, kEpsilon, 4.99).get({5, 0}), 0.0f);
+  EXPECT_EQ(clean_map(grid, kCleanEpsilon, 5.0).get({5, 0}), 15.0f);
+  EXPECT_EQ(clean_map(grid, kCleanEpsilon, 4.99).get({5, 0}), 0.0f);
 }
 
 TEST(CleanMap, WithoutAPathEverythingOccupiedGoes) {
   HistogramGrid grid = empty_grid(5, 5);
   grid.set({2, 2}, 15.0f);
   grid.set({3, 3}, 5.0f);  // below ε: not occupied, untouched
-  const HistogramGrid cleaned = clean_map(grid, kEpsilon, 50.0);
+  const HistogramGrid cleaned = clean_map(grid, kCleanEpsilon, 50.0);
   EXPECT_EQ(cleaned.get({2, 2}), 0.0f);
   EXPECT_EQ(cleaned.get({3, 3}), 5.0f);
 }
@@ -92,7 +92,7 @@ TEST(CleanMap, AnyVisiblePathCellIsEnough) {
   grid.set({0, 8}, kRobotPathValue);
   grid.set({4, 4}, 15.0f);  // pillar between (4,6) and (4,0)
   grid.set({4, 6}, 15.0f);
-  const HistogramGrid cleaned = clean_map(grid, kEpsilon, 50.0);
+  const HistogramGrid cleaned = clean_map(grid, kCleanEpsilon, 50.0);
   EXPECT_EQ(cleaned.get({4, 6}), 15.0f);
   EXPECT_EQ(cleaned.get({4, 4}), 15.0f);
 }

@@ -17,7 +17,7 @@ using testing::echo;
 using testing::kPi;
 using testing::single_forward_sonar;
 
-constexpr Pose2 kRobot{0.05, 0.05, 0.0};
+using testing::kRobot;
 
 TEST(BayesModel, TableWeightOnAxisAndAtTheEdge) {
   EXPECT_DOUBLE_EQ(table_weight(1.0, 5.0, 0.0, kPi / 12), 0.9);  // ((4/5) + 1) / 2

@@ -14,7 +14,7 @@ namespace {
 using testing::echo;
 using testing::single_forward_sonar;
 
-constexpr Pose2 kRobot{0.05, 0.05, 0.0};
+using testing::kRobot;
 
 TEST(DempsterShaferModel, TableMasses) {
   const DsMass one = ds_region_one(0.9, 0.98);

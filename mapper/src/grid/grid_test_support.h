@@ -10,6 +10,9 @@ namespace cogmap::mapper::testing {
 
 inline constexpr double kPi = std::numbers::pi;
 
+/// A robot at the centre of cell (60, 60) of the default grid (10 cm cells, origin (-6, -6)).
+inline constexpr Pose2 kRobot{0.05, 0.05, 0.0};
+
 /// One transducer at the robot centre looking forward: the beam starts at the pose itself.
 inline RobotGeometry single_forward_sonar() {
   RobotGeometry r;

@@ -16,7 +16,7 @@ using testing::cells_differing;
 using testing::echo;
 using testing::single_forward_sonar;
 
-constexpr Pose2 kRobot{0.05, 0.05, 0.0};
+using testing::kRobot;
 constexpr CellIndex kRobotCell{60, 60};
 
 /// The increments of thesis Figs. A.2-A.3 (+1.5 on the cell, +1.5 on each of the 3x3), a 2 m

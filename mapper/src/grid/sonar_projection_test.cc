@@ -1,4 +1,5 @@
 #include "grid/sonar_projection.h"
+#include "cogmap/test_support/angles.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +9,6 @@
 namespace cogmap::mapper {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kTol = 1e-12;
 
 TEST(SonarProjection, FrontTransducerAtOriginPose) {

@@ -1,4 +1,5 @@
 #include "cogmap/mapper/localization/direction_bins.h"
+#include "cogmap/test_support/angles.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +10,6 @@
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 TEST(DirectionBins, ABinHoldsItsMembersMeanLengthSpreadAndSquaredLengths) {
   // 1° bins tile [−45°, 45°) from −45°, so 10.2° and 10.6° share the bin [10°, 11°).

@@ -5,11 +5,10 @@
 #include <vector>
 
 #include "cogmap/mapper/localization/em.h"
+#include "cogmap/test_support/angles.h"
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 /// A one-segment polyline from the origin in direction `deg` with length `len`.
 Polyline ray(double deg, double len = 1.0) {

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 
-DoorFixOptions options() {
+DoorFixOptions door_fix_options() {
   DoorFixOptions o;
   o.match_radius_m = 0.8;
   o.ambiguity_ratio = 2.0;
@@ -25,7 +25,7 @@ DoorFixOptions options() {
 }
 
 TEST(DoorMemory, ANewDoorIsRememberedAndMovesNothing) {
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   EXPECT_FALSE(memory.pass({{5.0, 2.0}, 1.0, 0.0, 0.0}));
   EXPECT_FALSE(memory.pass({{5.0, 4.0}, 1.0, 0.0, 3.0}));  // 2 m away: another door
   ASSERT_EQ(memory.doors().size(), 2u);
@@ -33,7 +33,7 @@ TEST(DoorMemory, ANewDoorIsRememberedAndMovesNothing) {
 }
 
 TEST(DoorMemory, ADoorPassedAgainPullsTheEstimateBackByTheKalmanGain) {
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   ASSERT_FALSE(memory.pass({{5.0, 2.0}, 1.0, 0.0, 0.0}));
   // Passed back the other way 10 m later, drawn 0.3 m north and 0.15 m east of itself.
   const auto shift = memory.pass({{5.15, 2.3}, 0.95, std::numbers::pi, 10.0});
@@ -51,7 +51,7 @@ TEST(DoorMemory, ADoorPassedAgainPullsTheEstimateBackByTheKalmanGain) {
 }
 
 TEST(DoorMemory, AfterALongTourTheFixIsAlmostWhole) {
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   ASSERT_FALSE(memory.pass({{0.0, 0.0}, 1.0, kHalfPi, 0.0}));
   // 200 m later: drift variance 4 m² against 0.02 m² of scatter.
   const auto shift = memory.pass({{0.5, -0.2}, 1.0, kHalfPi, 200.0});
@@ -61,7 +61,7 @@ TEST(DoorMemory, AfterALongTourTheFixIsAlmostWhole) {
 }
 
 TEST(DoorMemory, ThePassageItselfWithoutTravelMovesNothing) {
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   ASSERT_FALSE(memory.pass({{0.0, 0.0}, 1.0, 0.0, 7.0}));
   const auto shift = memory.pass({{0.1, 0.1}, 1.0, 0.0, 7.0});  // no drift since: gain 0
   ASSERT_TRUE(shift);
@@ -69,7 +69,7 @@ TEST(DoorMemory, ThePassageItselfWithoutTravelMovesNothing) {
 }
 
 TEST(DoorMemory, APassageBetweenTwoKnownDoorsFixesNeither) {
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   ASSERT_FALSE(memory.pass({{0.0, 0.0}, 1.0, 0.0, 0.0}));
   ASSERT_FALSE(memory.pass({{0.0, 1.0}, 1.0, 0.0, 5.0}));
   // 0.45 m from the first, 0.55 m from the second: the second is not twice as far.
@@ -80,20 +80,20 @@ TEST(DoorMemory, APassageBetweenTwoKnownDoorsFixesNeither) {
 }
 
 TEST(DoorMemory, AnotherWidthOrAxisOrAWideGapIsNoFix) {
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   ASSERT_FALSE(memory.pass({{0.0, 0.0}, 0.9, 0.0, 0.0}));
   EXPECT_FALSE(memory.pass({{0.2, 0.0}, 1.25, 0.0, 50.0}));     // 0.35 m wider
   EXPECT_FALSE(memory.pass({{0.2, 0.0}, 0.9, kHalfPi, 50.0}));  // crossed at right angles
   EXPECT_FALSE(memory.pass({{0.2, 0.0}, 0.9, 0.9, 50.0}));      // 52° off the first axis
   EXPECT_TRUE(memory.pass({{0.2, 0.0}, 0.9, 0.7, 50.0}));       // 40° off: the same door
   // A 1.6 m gap neither fixes nor is remembered: its centre is placed too poorly.
-  DoorMemory wide(options());
+  DoorMemory wide(door_fix_options());
   EXPECT_FALSE(wide.pass({{0.0, 0.0}, 1.6, 0.0, 0.0}));
   EXPECT_TRUE(wide.doors().empty());
 }
 
 TEST(DoorMemory, APassageBeyondTheRadiusIsANewDoor) {
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   ASSERT_FALSE(memory.pass({{0.0, 0.0}, 1.0, 0.0, 0.0}));
   EXPECT_FALSE(memory.pass({{0.0, 0.85}, 1.0, 0.0, 50.0}));
   EXPECT_EQ(memory.doors().size(), 2u);
@@ -103,7 +103,7 @@ TEST(DoorMemory, APassageWithoutFiniteFiguresIsIgnored) {
   // A log's garbage must neither move the estimate nor become a door later passages match.
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  DoorMemory memory(options());
+  DoorMemory memory(door_fix_options());
   EXPECT_FALSE(memory.pass({{nan, 0.0}, 1.0, 0.0, 0.0}));
   EXPECT_FALSE(memory.pass({{0.0, 0.0}, nan, 0.0, 0.0}));
   EXPECT_FALSE(memory.pass({{0.0, 0.0}, 1.0, nan, 0.0}));

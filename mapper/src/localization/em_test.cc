@@ -6,11 +6,10 @@
 #include <vector>
 
 #include "cogmap/mapper/localization/em.h"
+#include "cogmap/test_support/angles.h"
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Draw {
   std::vector<double> x;

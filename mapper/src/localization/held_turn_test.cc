@@ -1,4 +1,5 @@
 #include "cogmap/mapper/localization/held_turn.h"
+#include "cogmap/test_support/angles.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,6 @@
 namespace cogmap::mapper {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 // The P2-AT's ring, degrees from the robot's front (docs/p2at.md).
 constexpr std::array<double, 16> kAxesDeg = {90,  50,   30,   10,   -10, -30, -50, -90,
                                              -90, -130, -150, -170, 170, 150, 130, 90};

@@ -6,12 +6,11 @@
 #include <vector>
 
 #include "cogmap/mapper/localization/localizer.h"
+#include "cogmap/test_support/angles.h"
 #include "synthetic_rooms.h"
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 /// The best any estimator can do from the data: the length-weighted mean direction of the
 /// true walls (pieces within 5° of the known truth) of each set, reference minus current.

@@ -17,7 +17,7 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 /// A wall piece from a to b seen from the side `normal` points to.
 FacingSegment wall(Point2 a, Point2 b, Point2 normal) { return {a, b, normal}; }
 
-RelaxationOptions options() {
+RelaxationOptions relaxation_options() {
   RelaxationOptions o;
   o.drift_sd_per_m = 0.016;
   o.min_step_sd_m = 0.02;
@@ -35,7 +35,7 @@ RelaxationOptions options() {
 TEST(MapRelaxation, AWallSeenAgainPullsTheLaterRoomBackByTheWeights) {
   const std::vector<RelaxationRoom> rooms = {{{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0},
                                              {{wall({0.5, 2.3}, {4.5, 2.3}, {0.0, -1.0})}, 50.0}};
-  const Relaxation r = relax_room_positions(rooms, options());
+  const Relaxation r = relax_room_positions(rooms, relaxation_options());
   ASSERT_EQ(r.shifts.size(), 2u);
   EXPECT_NEAR(r.shifts[0].norm(), 0.0, 1e-6);  // room 0 is where the start pose put it
   const double w_pair = 350.0, w_chain = 1.0 / 0.64;
@@ -51,7 +51,7 @@ TEST(MapRelaxation, PiecesOfOneWallAreNoAmbiguity) {
   const std::vector<RelaxationRoom> rooms = {
       {{wall({0.0, 2.0}, {2.0, 2.0}, {0.0, -1.0}), wall({3.0, 2.0}, {5.0, 2.0}, {0.0, -1.0})}, 5.0},
       {{wall({0.5, 2.2}, {4.5, 2.2}, {0.0, -1.0})}, 50.0}};
-  const Relaxation r = relax_room_positions(rooms, options());
+  const Relaxation r = relax_room_positions(rooms, relaxation_options());
   EXPECT_LT(r.shifts[1].y(), -0.19);
   EXPECT_EQ(r.same_side_pairs, 1);
 }
@@ -63,7 +63,7 @@ TEST(MapRelaxation, AnAmbiguousPieceMovesNothing) {
       {{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0}), wall({0.0, 2.15}, {4.0, 2.15}, {0.0, -1.0})},
        5.0},
       {{wall({0.0, 2.1}, {4.0, 2.1}, {0.0, -1.0})}, 50.0}};
-  const Relaxation r = relax_room_positions(rooms, options());
+  const Relaxation r = relax_room_positions(rooms, relaxation_options());
   EXPECT_EQ(r.same_side_pairs, 0);
   EXPECT_NEAR(r.shifts[1].norm(), 0.0, 1e-9);
 }
@@ -76,7 +76,7 @@ TEST(MapRelaxation, WallsBeyondTheGatesAreNotPaired) {
        {wall({0.0, 2.9}, {4.0, 2.9}, {0.0, -1.0}), wall({0.0, 1.6}, {4.0, 3.06}, {0.0, -1.0}),
         wall({5.2, 2.1}, {8.0, 2.1}, {0.0, -1.0})}) {
     const std::vector<RelaxationRoom> rooms = {first, {{other}, 500.0}};
-    const Relaxation r = relax_room_positions(rooms, options());
+    const Relaxation r = relax_room_positions(rooms, relaxation_options());
     EXPECT_EQ(r.same_side_pairs + r.two_face_pairs, 0);
     EXPECT_NEAR(r.shifts[1].norm(), 0.0, 1e-9);
   }
@@ -84,7 +84,7 @@ TEST(MapRelaxation, WallsBeyondTheGatesAreNotPaired) {
   // gate, in the first round and every later one.
   const std::vector<RelaxationRoom> near = {first,
                                             {{wall({0.0, 2.3}, {4.0, 2.3}, {0.0, -1.0})}, 1.0}};
-  EXPECT_EQ(relax_room_positions(near, options()).same_side_pairs, 0);
+  EXPECT_EQ(relax_room_positions(near, relaxation_options()).same_side_pairs, 0);
 }
 
 // Room 1 draws the wall's next run, 0.6 m past the end of room 0's piece (a door between them),
@@ -93,15 +93,15 @@ TEST(MapRelaxation, WallsBeyondTheGatesAreNotPaired) {
 TEST(MapRelaxation, TheNextRunOfAWallLineIsPairedAcrossAGap) {
   const std::vector<RelaxationRoom> rooms = {{{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0},
                                              {{wall({4.6, 2.2}, {8.6, 2.2}, {0.0, -1.0})}, 50.0}};
-  const Relaxation r = relax_room_positions(rooms, options());
+  const Relaxation r = relax_room_positions(rooms, relaxation_options());
   EXPECT_EQ(r.same_side_pairs, 1);
   EXPECT_NEAR(r.shifts[1].y(), -0.2 * 50.0 / (50.0 + 1.0 / 0.64), 1e-9);
-  RelaxationOptions off = options();
+  RelaxationOptions off = relaxation_options();
   off.continuation_gap_m = 0.0;
   EXPECT_EQ(relax_room_positions(rooms, off).same_side_pairs, 0);
   const std::vector<RelaxationRoom> other_side = {
       rooms[0], {{wall({4.6, 2.2}, {8.6, 2.2}, {0.0, 1.0})}, 50.0}};
-  EXPECT_EQ(relax_room_positions(other_side, options()).two_face_pairs, 0);
+  EXPECT_EQ(relax_room_positions(other_side, relaxation_options()).two_face_pairs, 0);
 }
 
 // A robot that stays in one office cuts room after room on the same walls: each is paired
@@ -109,7 +109,7 @@ TEST(MapRelaxation, TheNextRunOfAWallLineIsPairedAcrossAGap) {
 // so the work and the problem grow with the rooms, not with their square.
 TEST(MapRelaxation, RoomsInOnePlaceArePairedWithTheirNearestFew) {
   std::vector<RelaxationRoom> rooms(100, {{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 4.5});
-  RelaxationOptions o = options();
+  RelaxationOptions o = relaxation_options();
   o.max_partners = 5;
   const Relaxation r = relax_room_positions(rooms, o);
   EXPECT_EQ(r.same_side_pairs, 1 + 2 + 3 + 4 + 95 * 5);
@@ -119,7 +119,7 @@ TEST(MapRelaxation, RoomsInOnePlaceArePairedWithTheirNearestFew) {
 // A wall's south face from room 0, its north face from room 1, drawn 0.2 m too far north; the
 // thickness held at 0.12 m (sd 1 mm): room 1 moves back by the pair's weight against the chain.
 TEST(MapRelaxation, TheTwoFacesOfAWallPullTheRoomsTogether) {
-  RelaxationOptions o = options();
+  RelaxationOptions o = relaxation_options();
   o.wall_thickness_m = 0.12;
   o.wall_thickness_sd_m = 0.001;
   const std::vector<RelaxationRoom> rooms = {{{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0},
@@ -151,7 +151,7 @@ TEST(MapRelaxation, TheThicknessIsEstimatedFromTheRunsOwnWalls) {
       {{wall({0.0, -1.0 + d}, {4.0, -1.0 + d}, {0.0, 1.0}),
         wall({0.0, 2.12 + d}, {4.0, 2.12 + d}, {0.0, 1.0})},
        1000.0}};
-  const Relaxation r = relax_room_positions(rooms, options());
+  const Relaxation r = relax_room_positions(rooms, relaxation_options());
   EXPECT_EQ(r.same_side_pairs, 1);
   EXPECT_EQ(r.two_face_pairs, 1);
   const double w_b = 4.0 / 0.01, w_a = 4.0 / (0.01 + 0.0064), w_c = 1.0 / (16.0 * 16.0),
@@ -172,23 +172,23 @@ TEST(MapRelaxation, ARoomWithoutCommonWallsFollowsItsNeighbours) {
   const std::vector<RelaxationRoom> rooms = {{{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0},
                                              {{wall({10.0, 0.0}, {10.0, 4.0}, {-1.0, 0.0})}, 20.0},
                                              {{wall({0.0, 2.4}, {4.0, 2.4}, {0.0, -1.0})}, 20.0}};
-  const Relaxation r = relax_room_positions(rooms, options());
+  const Relaxation r = relax_room_positions(rooms, relaxation_options());
   EXPECT_EQ(r.same_side_pairs, 1);
   EXPECT_LT(r.shifts[2].y(), -0.35);
   EXPECT_NEAR(r.shifts[1].y(), 0.5 * r.shifts[2].y(), 1e-6);
 }
 
 TEST(MapRelaxation, NothingToRelaxAndBadGeometryAreHarmless) {
-  EXPECT_TRUE(relax_room_positions({}, options()).shifts.empty());
+  EXPECT_TRUE(relax_room_positions({}, relaxation_options()).shifts.empty());
   const std::vector<RelaxationRoom> one = {{{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0}};
-  EXPECT_EQ(relax_room_positions(one, options()).shifts.size(), 1u);
+  EXPECT_EQ(relax_room_positions(one, relaxation_options()).shifts.size(), 1u);
   const std::vector<RelaxationRoom> bad = {
       {{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0}), wall({kNan, 2.0}, {4.0, 2.0}, {0.0, -1.0}),
         wall({1.0, 1.0}, {1.0, 1.0}, {0.0, -1.0})},
        kNan},
       {{wall({0.0, 2.2}, {4.0, 2.2}, {0.0, -1.0}), wall({0.0, 2.2}, {4.0, kNan}, {0.0, -1.0})},
        -3.0}};
-  const Relaxation r = relax_room_positions(bad, options());
+  const Relaxation r = relax_room_positions(bad, relaxation_options());
   ASSERT_EQ(r.shifts.size(), 2u);
   EXPECT_TRUE(r.shifts[1].allFinite());
   EXPECT_EQ(r.same_side_pairs, 1);

@@ -7,12 +7,11 @@
 #include <random>
 
 #include "cogmap/mapper/localization/localizer.h"
+#include "cogmap/test_support/angles.h"
 #include "synthetic_rooms.h"
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 TEST(RotationPrior, PathRotationCountsTurnsAlongChords) {
   // East 2 m, then north 2 m: one 90° corner; entry heading east, exit heading north.

@@ -7,12 +7,11 @@
 #include <utility>
 #include <vector>
 
+#include "cogmap/test_support/angles.h"
 #include "facade/mapper_test_support.h"
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 /// A 6 x 5 m room with a 1 x 0.6 m cabinet against its north wall (so no rotation or shift is
 /// a symmetry of it).
@@ -62,7 +61,7 @@ void draw_memory(ScanMatcher& matcher, const RobotGeometry& robot,
   matcher.match(error.compose(path.back()), 1e-6, 1e-6);
 }
 
-ScanMatchOptions options() {
+ScanMatchOptions scan_match_options() {
   ScanMatchOptions o;
   o.enabled = true;
   return o;
@@ -82,7 +81,7 @@ Pose2 draw_window(ScanMatcher& matcher, const RobotGeometry& robot,
 TEST(ScanMatch, FindsTheEstimatesRotationAndShift) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();
-  ScanMatcher matcher(options(), robot);
+  ScanMatcher matcher(scan_match_options(), robot);
   draw_memory(matcher, robot, walls);
   // The estimate turned 2° about the window's end and shifted (6, -4) cm.
   const Point2 end{1.5, 3.6};
@@ -105,7 +104,7 @@ TEST(ScanMatch, FindsTheEstimatesRotationAndShift) {
 TEST(ScanMatch, TurningOnlyLeavesThePositionAlone) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();
-  ScanMatchOptions turning_only = options();
+  ScanMatchOptions turning_only = scan_match_options();
   turning_only.shift = false;
   ScanMatcher matcher(turning_only, robot);
   draw_memory(matcher, robot, walls);
@@ -121,7 +120,7 @@ TEST(ScanMatch, TurningOnlyLeavesThePositionAlone) {
 TEST(ScanMatch, LeavesAnEstimateWithoutErrorAlone) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();
-  ScanMatcher matcher(options(), robot);
+  ScanMatcher matcher(scan_match_options(), robot);
   draw_memory(matcher, robot, walls);
   const Pose2 estimate = draw_window(matcher, robot, walls, Pose2{});
   const ScanMatchFix fix = matcher.match(estimate, std::pow(3.0 * kDeg, 2), 0.01);
@@ -137,7 +136,7 @@ TEST(ScanMatch, TheOdometryPriorHoldsTheAnswerBack) {
   const auto walls = room_walls();
   const Point2 end{1.5, 3.6};
   const Pose2 error = rotation_about(end, 2.0 * kDeg);
-  ScanMatcher wide(options(), robot), narrow(options(), robot);
+  ScanMatcher wide(scan_match_options(), robot), narrow(scan_match_options(), robot);
   for (ScanMatcher* m : {&wide, &narrow}) draw_memory(*m, robot, walls);
   const Pose2 estimate = draw_window(wide, robot, walls, error);
   draw_window(narrow, robot, walls, error);
@@ -154,7 +153,7 @@ TEST(ScanMatch, TheOdometryPriorHoldsTheAnswerBack) {
 ScanMatchFix match_in_corridor(const Pose2& error) {
   const RobotGeometry robot = p2at_geometry();
   const std::vector<Segment> walls{{{-5.0, -1.2}, {25.0, -1.2}}, {{-5.0, 1.2}, {25.0, 1.2}}};
-  ScanMatcher matcher(options(), robot);
+  ScanMatcher matcher(scan_match_options(), robot);
   for (const Pose2& p : leg({0.0, 0.0}, {14.0, 0.0})) fire(matcher, robot, walls, p, p, 0);
   matcher.match({14.0, 0.0, 0.0}, 1e-6, 1e-6);
   Pose2 estimate;
@@ -184,7 +183,7 @@ TEST(ScanMatch, ACorridorsLengthIsLeftUnmeasured) {
 TEST(ScanMatch, NothingIsMeasuredWithoutAMemoryOrNearItsWalls) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();
-  ScanMatcher matcher(options(), robot);
+  ScanMatcher matcher(scan_match_options(), robot);
   // No memory: the first window only joins it.
   const Pose2 estimate = draw_window(matcher, robot, walls, Pose2{});
   const ScanMatchFix first = matcher.match(estimate, 1e-4, 1e-3);
@@ -206,7 +205,7 @@ TEST(ScanMatch, NothingIsMeasuredWithoutAMemoryOrNearItsWalls) {
 TEST(ScanMatch, AWindowTooWideOrABrokenEstimateMeasuresNothing) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();
-  ScanMatcher matcher(options(), robot);
+  ScanMatcher matcher(scan_match_options(), robot);
   draw_memory(matcher, robot, walls);
   // The same window, but its last echoes drawn 60 m away (an odometry jump): not matched.
   const Pose2 estimate = draw_window(matcher, robot, walls, Pose2{});
@@ -228,7 +227,7 @@ TEST(ScanMatch, MemoryFollowsItsRoomsCorrection) {
   // the move the window would be matched 3° onto the uncorrected memory.
   const Pose2 drawn_off = rotation_about({3.0, 2.5}, 3.0 * kDeg);
   for (bool moved : {true, false}) {
-    ScanMatcher matcher(options(), robot);
+    ScanMatcher matcher(scan_match_options(), robot);
     draw_memory(matcher, robot, walls, drawn_off);
     if (moved) matcher.move_room(0, drawn_off.inverse());
     matcher.move_room(7, Pose2{1.0, 1.0, 1.0});  // no echo of room 7: nothing moves
@@ -246,7 +245,7 @@ TEST(ScanMatch, MemoryFollowsItsRoomsCorrection) {
 TEST(ScanMatch, MemoryFollowsAShiftOfTheEstimate) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();
-  ScanMatcher matcher(options(), robot);
+  ScanMatcher matcher(scan_match_options(), robot);
   // The memory was drawn 10 cm east; a doorway fix shifts the estimate back, and the memory too.
   const Pose2 east{0.1, 0.0, 0.0};
   draw_memory(matcher, robot, walls, east);
@@ -260,7 +259,7 @@ TEST(ScanMatch, MemoryFollowsAShiftOfTheEstimate) {
 TEST(ScanMatch, AMatchIsDueAfterTravelOrTurningWithEnoughEchoes) {
   const RobotGeometry robot = p2at_geometry();
   const auto walls = room_walls();
-  ScanMatchOptions o = options();
+  ScanMatchOptions o = scan_match_options();
   o.min_window_echoes = 20;
   ScanMatcher matcher(o, robot);
   EXPECT_FALSE(matcher.visit({1.0, 1.0, 0.0}, 0.0));

@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "nav/nav_core.h"
+#include "nav/nav_test_util.h"
 #include "nav/steering.h"
 
 namespace cogmap::mapper::nav {
 namespace {
 
-constexpr double kHalfLength = 0.313;  // P2-AT: 0.626 m long
+using testing::kHalfLength;
 
 TEST(LaneClearance, SkipsThePointsInTheDoorBand) {
   // Smear 0.6 m ahead in the door line (x = 0.6), a wall 1.5 m ahead beyond it.

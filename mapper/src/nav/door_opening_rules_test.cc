@@ -8,13 +8,13 @@
 #include <optional>
 #include <vector>
 
+#include "cogmap/test_support/angles.h"
 #include "nav/door_passage.h"
 
 namespace cogmap::mapper::nav {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kWallX = 2.0;
+constexpr double kDoorWallX = 2.0;
 
 /// Points (2, k·0.1) for k in [-40, 40], except lo_dm < k < hi_dm: the jambs are at
 /// y = lo_dm·0.1 and hi_dm·0.1. lo_dm == hi_dm is a closed wall.
@@ -22,14 +22,14 @@ std::vector<ObstaclePoint> wall(int lo_dm, int hi_dm) {
   std::vector<ObstaclePoint> out;
   for (int k = -40; k <= 40; ++k) {
     if (k > lo_dm && k < hi_dm) continue;
-    out.push_back({Point2(kWallX, k / 10.0), 15.0f});
+    out.push_back({Point2(kDoorWallX, k / 10.0), 15.0f});
   }
   return out;
 }
 
 /// A goal 1 m beyond the wall, `deg` off the wall's normal as seen from the robot.
 Point2 goal_at_angle(double deg) {
-  const double x = kWallX + 1.0;
+  const double x = kDoorWallX + 1.0;
   return {x, x * std::tan(deg * kPi / 180.0)};
 }
 
@@ -40,7 +40,7 @@ std::optional<Opening> find(const std::vector<ObstaclePoint>& points, const Poin
 
 void expect_opening(const std::optional<Opening>& o, double center_y, double width) {
   ASSERT_TRUE(o.has_value());
-  EXPECT_NEAR(o->center_m.x(), kWallX, 1e-9);
+  EXPECT_NEAR(o->center_m.x(), kDoorWallX, 1e-9);
   EXPECT_NEAR(o->center_m.y(), center_y, 1e-9);
   EXPECT_NEAR(o->normal.x(), 1.0, 1e-12);
   EXPECT_NEAR(o->normal.y(), 0.0, 1e-12);
@@ -71,7 +71,7 @@ TEST(FindOpeningRules, MaxAxisAngleBracketsTheDoorAngle) {
 // A waypoint at the nominal door centre (2, 0): the goal is in the door line, so the opening
 // must lie within goal_in_door_m = 0.8 of it.
 TEST(FindOpeningRules, AGoalInTheDoorLineNamesOnlyANearbyOpening) {
-  const Point2 goal(kWallX, 0.0);
+  const Point2 goal(kDoorWallX, 0.0);
   expect_opening(find(wall(-2, 8), goal), 0.3, 1.0);  // centre 0.3 m from the goal
   const auto far = wall(5, 15);                       // centre (2, 1.0): 1.0 m from it
   EXPECT_FALSE(find(far, goal));
@@ -122,7 +122,7 @@ TEST(FindOpeningRules, TrustsOnlyAnOpeningSeenNearItsAxis) {
 
 TEST(FindOpeningRules, AClosedDoorHasNoOpening) {
   EXPECT_FALSE(find(wall(0, 0), Point2(4.0, 0.0)));
-  EXPECT_FALSE(find(wall(0, 0), Point2(kWallX, 0.0)));
+  EXPECT_FALSE(find(wall(0, 0), Point2(kDoorWallX, 0.0)));
 }
 
 }  // namespace

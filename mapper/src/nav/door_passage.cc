@@ -6,11 +6,10 @@
 #include <numbers>
 
 #include "cogmap/mapper/asr/stages.h"
+#include "nav/nav_constants.h"
 
 namespace cogmap::mapper::nav {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 /// The opening's normal from the wall it sits in: the two jamb points alone (0.9-1.2 m
 /// apart, one often on the wall's near face and one on its far face, each with range noise)

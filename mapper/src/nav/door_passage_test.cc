@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "cogmap/test_support/angles.h"
 #include "nav/nav_test_util.h"
 
 namespace cogmap::mapper::nav {
@@ -19,8 +20,6 @@ namespace {
 
 using testing::frame_at;
 using testing::integrate;
-
-constexpr double kPi = std::numbers::pi;
 
 /// A wall along x = wall_x from y = -30 to 30 (too long to drive around before the route
 /// gives up) with a gap [gap_lo, gap_hi] (none when equal).

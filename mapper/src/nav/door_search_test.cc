@@ -10,12 +10,11 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "cogmap/test_support/angles.h"
 #include "nav/loop_world.h"
 
 namespace cogmap::mapper::nav {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // The wall y = 1 seen from below: the normal points from the robot's side (+y) to it.
 WallLine wall_y1() { return {Point2(0.0, 1.0), Point2(1.0, 0.0), Point2(0.0, 1.0)}; }

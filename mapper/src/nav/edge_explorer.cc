@@ -11,12 +11,11 @@
 #include "nav/door_passage.h"
 #include "nav/explore_budget.h"
 #include "nav/frontier_explorer.h"
+#include "nav/nav_constants.h"
 #include "nav/nav_core.h"
 
 namespace cogmap::mapper::nav {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// The sides as the side transducers see them now (robot frame, from the centre line), and
 /// the body's lane ahead from the obstacle field. The field's echoes linger for seconds and
@@ -142,7 +141,6 @@ class EdgeExplorer final : public Controller {
 
  private:
   enum class State { kSeek, kFollow, kEndOfEdge, kCross, kPivot, kAcquire, kCorner };
-  static constexpr double kPi = std::numbers::pi;
 
   /// kSeek: straight ahead until something is near enough to follow. kAcquire (after a
   /// doorway): bear right until the edge is back. nullopt once following begins.

@@ -10,12 +10,11 @@
 #include "cogmap/mapper/nav/controller.h"
 #include "nav/explore_budget.h"
 #include "nav/frontier_explorer.h"
+#include "nav/nav_constants.h"
 #include "nav/nav_core.h"
 
 namespace cogmap::mapper::nav {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 class Explorer final : public Controller {
  public:

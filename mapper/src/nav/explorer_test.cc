@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "cogmap/test_support/angles.h"
 #include "nav/fake_grid_updater.h"
 #include "nav/nav_test_util.h"
 
@@ -13,8 +14,6 @@ namespace {
 
 using testing::frame_at;
 using testing::integrate;
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // These tests cover the thesis's Fig. 1.2 explorer (frontier_explorer_test.cc the default).
 ExploreOptions heading_options() {

@@ -1,4 +1,5 @@
 #include "nav/frontier_planner.h"
+#include "nav/nav_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,6 @@ namespace cogmap::mapper::nav {
 namespace {
 
 using Cell = ExploreMap::Cell;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kDx[8] = {1, -1, 0, 0, 1, 1, -1, -1};
 constexpr int kDy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
 

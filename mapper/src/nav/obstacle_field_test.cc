@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "nav/fake_grid_updater.h"
+#include "nav/nav_test_util.h"
 
 namespace cogmap::mapper::nav {
 namespace {
@@ -89,7 +90,7 @@ Reference reference_build(const VfhOptions& vfh, const MemoryOptions& memory_opt
   return out;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using testing::same_bits;
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 /// Builds the field and the reference and compares them exactly.

@@ -8,12 +8,13 @@
 #include <numbers>
 #include <vector>
 
+#include "cogmap/test_support/angles.h"
+#include "nav/nav_test_util.h"
 #include "nav/obstacle_memory.h"
 
 namespace cogmap::mapper::nav {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kMountX = 0.2;
 constexpr double kMountY = 0.1;
 
@@ -23,12 +24,7 @@ RobotGeometry one_mount() {
   return robot;
 }
 
-SensorFrame frame(double time_s, std::vector<SonarReading> sonar) {
-  SensorFrame f;
-  f.time_s = time_s;
-  f.sonar = std::move(sonar);
-  return f;
-}
+using testing::frame;
 
 SonarReading echo(int index, double range_m) { return {index, range_m, true, 0.0}; }
 SonarReading no_echo(int index) { return {index, 5.0, false, 0.0}; }

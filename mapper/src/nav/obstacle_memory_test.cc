@@ -7,17 +7,13 @@
 
 #include "cogmap/mapper/nav/vfh.h"
 #include "nav/fake_grid_updater.h"
+#include "nav/nav_test_util.h"
 #include "nav/obstacle_field.h"
 
 namespace cogmap::mapper::nav {
 namespace {
 
-SensorFrame frame(double time_s, std::vector<SonarReading> sonar) {
-  SensorFrame f;
-  f.time_s = time_s;
-  f.sonar = std::move(sonar);
-  return f;
-}
+using testing::frame;
 
 TEST(ObstacleMemory, PlacesEchoesOnTheTransducerAxisInTheWorld) {
   const RobotGeometry robot = p2at_geometry();

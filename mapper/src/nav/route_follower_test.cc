@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/controller.h"
+#include "cogmap/test_support/angles.h"
 #include "nav/fake_grid_updater.h"
 #include "nav/nav_test_util.h"
 
@@ -14,8 +15,6 @@ namespace {
 
 using testing::frame_at;
 using testing::integrate;
-
-constexpr double kPi = std::numbers::pi;
 
 struct Fixture {
   RobotGeometry robot = p2at_geometry();

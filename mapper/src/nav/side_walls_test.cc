@@ -12,15 +12,16 @@
 
 #include "cogmap/mapper/seam/robot_geometry.h"
 #include "nav/fake_grid_updater.h"
+#include "nav/nav_constants.h"
 #include "nav/nav_core.h"
+#include "nav/nav_test_util.h"
 #include "nav/steering.h"
 
 namespace cogmap::mapper::nav {
 namespace {
 
-constexpr double kHalfLength = 0.313;  // P2-AT: 0.626 m long
+using testing::kHalfLength;
 constexpr double kHalfWidth = 0.2525;  // ...0.505 m wide
-const double kInf = std::numeric_limits<double>::infinity();
 
 /// The check as `controller.grazing_walls: true` turns it on.
 SideWallOptions on() {

@@ -9,12 +9,11 @@
 #include <limits>
 #include <vector>
 
+#include "cogmap/test_support/angles.h"
 #include "nav/nav_core.h"
 
 namespace cogmap::mapper::nav {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 // A point beside the front-left corner of the P2-AT (corner at x 0.313, y 0.2525): outside the
 // outline grown by 0.04 m (|y| > 0.2925) but within its corners' reach (0.4585 m).

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "nav/nav_test_util.h"
 #include "nav/steering.h"
 
 namespace cogmap::mapper::nav {
@@ -30,11 +31,9 @@ double reference_clearance_m(const std::vector<ObstaclePoint>& obstacles, double
   return nearest;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using testing::same_bits;
 
-Point2 at(double bearing_rad, double range_m) {
-  return range_m * Point2(std::cos(bearing_rad), std::sin(bearing_rad));
-}
+using testing::at;
 
 TEST(SteeringClearance, MatchesTheBearingTestBitForBit) {
   std::mt19937_64 rng(20261203);

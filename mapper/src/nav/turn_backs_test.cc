@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/vfh.h"
+#include "cogmap/test_support/angles.h"
 
 namespace cogmap::mapper::nav {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kTarget = 90.0 * kDeg;
 
 TEST(TurnBacks, TwoTurnBacksWithinTheWindowHoldTheWay) {

@@ -5,14 +5,11 @@
 #include <numbers>
 
 #include "cogmap/mapper/grid/grid.h"
+#include "nav/nav_constants.h"
 #include "nav/turn_backs.h"
 
 namespace cogmap::mapper::nav {
-namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-}  // namespace
+namespace {}  // namespace
 
 Vfh::Vfh(const VfhOptions& options) : options_(options) {
   const double sector_deg = options_.sector_deg > 0.0 ? options_.sector_deg : 5.0;

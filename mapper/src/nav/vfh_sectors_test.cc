@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cogmap/mapper/nav/vfh.h"
+#include "nav/nav_test_util.h"
 
 namespace cogmap::mapper::nav {
 namespace {
@@ -38,9 +39,7 @@ std::vector<double> reference_density(const Vfh& vfh, const VfhOptions& options,
   return density;
 }
 
-Point2 at(double bearing_rad, double range_m) {
-  return range_m * Point2(std::cos(bearing_rad), std::sin(bearing_rad));
-}
+using testing::at;
 
 TEST(VfhSectors, DensityMatchesTheAnglesBitForBit) {
   std::mt19937_64 rng(1203);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cogmap/test_support/angles.h"
 #include "nav/fake_grid_updater.h"
 #include "nav/obstacle_field.h"
 #include "nav/obstacle_memory.h"
@@ -12,15 +13,13 @@
 namespace cogmap::mapper::nav {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // A wall across the x axis at x = 1.05 (one column of cells), certainty 15, with a gap between
 // y = -gap/2 and +gap/2 (cell edges), like a doorway in front of a robot at the origin.
-constexpr double kWallX = 1.05;
+constexpr double kVfhWallX = 1.05;
 testing::FakeGridUpdater doorway(double gap_m) {
   testing::FakeGridUpdater grid(-5.0, -5.0, 10.0, -1.0f);
-  grid.fill_box(kWallX - 0.03, 0.5 * gap_m + 0.02, kWallX + 0.03, 2.5, 15.0f);
-  grid.fill_box(kWallX - 0.03, -2.5, kWallX + 0.03, -0.5 * gap_m - 0.02, 15.0f);
+  grid.fill_box(kVfhWallX - 0.03, 0.5 * gap_m + 0.02, kVfhWallX + 0.03, 2.5, 15.0f);
+  grid.fill_box(kVfhWallX - 0.03, -2.5, kVfhWallX + 0.03, -0.5 * gap_m - 0.02, 15.0f);
   return grid;
 }
 
@@ -132,7 +131,7 @@ TEST(Vfh, OneMetreDoorwayIsPassableWithTheTargetBeyond) {
   ASSERT_TRUE(choice.found);
   // The line along the chosen direction crosses the wall between the door posts with the
   // robot's half-width (0.2525 m) to spare.
-  const double y_at_wall = kWallX * std::tan(choice.direction_rad);
+  const double y_at_wall = kVfhWallX * std::tan(choice.direction_rad);
   EXPECT_LT(std::abs(y_at_wall), 0.5 - 0.2525);
 }
 
@@ -143,7 +142,7 @@ TEST(Vfh, OneMetreDoorwayIsPassableFromOffCentreAndOblique) {
   const double target = std::atan2(0.3 - 0.2, 3.0);
   const VfhChoice choice = choose(grid, robot, target);
   ASSERT_TRUE(choice.found);
-  const double y_at_wall = robot.y() + kWallX * std::tan(choice.direction_rad);
+  const double y_at_wall = robot.y() + kVfhWallX * std::tan(choice.direction_rad);
   EXPECT_LT(std::abs(y_at_wall), 0.5 - 0.2525);
 }
 
@@ -151,7 +150,7 @@ TEST(Vfh, NinetyCentimetreDoorwayIsPassable) {
   const auto grid = doorway(0.9);
   const VfhChoice choice = choose(grid, Point2(0.0, 0.0), 0.0);
   ASSERT_TRUE(choice.found);
-  EXPECT_LT(std::abs(kWallX * std::tan(choice.direction_rad)), 0.45 - 0.2525);
+  EXPECT_LT(std::abs(kVfhWallX * std::tan(choice.direction_rad)), 0.45 - 0.2525);
 }
 
 TEST(Vfh, FortyCentimetreGapIsNotPassable) {
@@ -162,7 +161,7 @@ TEST(Vfh, FortyCentimetreGapIsNotPassable) {
   EXPECT_TRUE(vfh.blocked(-1));
   EXPECT_TRUE(vfh.blocked(1));
   ASSERT_TRUE(choice.found);  // the wall ends inside the window: it may go around
-  const double y_at_wall = kWallX * std::tan(choice.direction_rad);
+  const double y_at_wall = kVfhWallX * std::tan(choice.direction_rad);
   EXPECT_TRUE(std::abs(choice.direction_rad) >= 0.5 * std::numbers::pi ||
               std::abs(y_at_wall) > 0.2 + 0.2525)
       << choice.direction_rad / kDeg;
@@ -193,7 +192,6 @@ std::vector<ObstaclePoint> long_wall_ahead() {
 }
 
 TEST(VfhDetourSide, KeepsItsSideUntilTheOtherIsMuchCheaper) {
-  constexpr double kDeg = std::numbers::pi / 180.0;
   Vfh vfh{VfhOptions{}};
   vfh.build(long_wall_ahead());
   const double target = 5.0 * kDeg;  // slightly left: without memory the left side wins

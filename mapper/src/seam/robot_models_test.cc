@@ -5,11 +5,10 @@
 #include <numbers>
 
 #include "cogmap/mapper/seam/robot_models.h"
+#include "cogmap/test_support/angles.h"
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 void expect_mount(const RobotGeometry& g, std::size_t i, double x_mm, double y_mm, double deg) {
   ASSERT_LT(i, g.sonars.size());

@@ -5,11 +5,10 @@
 #include "cogmap/mapper/grid/grid.h"
 #include "cogmap/mapper/seam/fake_robot.h"
 #include "cogmap/mapper/seam/pose2.h"
+#include "cogmap/test_support/angles.h"
 
 namespace cogmap::mapper {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 TEST(Pose2, ComposeThenInverseIsIdentity) {
   const Pose2 a{1.0, 2.0, 0.3}, b{-0.5, 4.0, -1.2};

@@ -5,13 +5,12 @@
 #include "cogmap/sim/motion_limiter.h"
 #include "cogmap/sim/physics_world.h"
 #include "cogmap/sim/stall_detector.h"
+#include "world/world_test_support.h"
 
 namespace cogmap::sim {
 namespace {
 
-WorldSpec parse(const std::string& text) {
-  return parse_world(yaml::Node::load_string(text, "p.yaml"));
-}
+using testing::parse;
 
 TEST(MotionLimiter, RampsAtAccelAndDecelLimits) {
   MotionLimiter limiter;  // 0.3 m/s² up, 0.6 m/s² down, 0.75 m/s top

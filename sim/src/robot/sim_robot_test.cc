@@ -8,18 +8,14 @@
 
 #include "cogmap/sim/seed.h"
 #include "cogmap/sim/sim_robot.h"
+#include "world/world_test_support.h"
 
 namespace cogmap::sim {
 namespace {
 
-WorldSpec parse(const std::string& text) {
-  return parse_world(yaml::Node::load_string(text, "r.yaml"));
-}
+using testing::parse;
 
-std::filesystem::path source_dir() {
-  if (const char* env = std::getenv("COGMAP_SOURCE_DIR")) return env;
-  return COGMAP_SOURCE_DIR_FALLBACK;
-}
+using testing::source_dir;
 
 // FNV-1a over the exact bit patterns of everything a frame carries.
 struct FrameHash {

@@ -28,9 +28,7 @@ using testing::reference_surface_strength;
 using testing::scene_of;
 using testing::single_transducer_geometry;
 
-const SonarMaterial& builtin(const char* name) {
-  return builtin_sonar_materials()[static_cast<std::size_t>(builtin_index(name))];
-}
+using testing::builtin;
 
 TEST(SonarMaterial, BuiltinTable) {
   const auto& t = builtin_sonar_materials();

@@ -31,9 +31,7 @@ using testing::single_transducer_geometry;
 // hit distance exactly d / cos(offset) and the axis ray's exactly d.
 SonarScene wall_at(double d) { return scene_of({{Point2(d, -4.0), Point2(d, 4.0)}}); }
 
-const SonarMaterial& builtin(const char* name) {
-  return builtin_sonar_materials()[static_cast<std::size_t>(builtin_index(name))];
-}
+using testing::builtin;
 
 TEST(SonarModel, SquareWallReadsItsPerpendicularDistance) {
   const auto g = single_transducer_geometry();

@@ -307,7 +307,7 @@ TEST(SonarOptions, ParsesEveryKey) {
 }
 
 // The message of parsing `sonar:\n  <line>\n` from file t.yaml.
-std::string error_of(const std::string& line) {
+std::string sonar_error_of(const std::string& line) {
   const auto root = yaml::Node::load_string("sonar:\n  " + line + "\n", "t.yaml");
   return config_error_of([&] { parse_sonar_options(root["sonar"]); });
 }
@@ -325,17 +325,17 @@ TEST(SonarOptions, RejectsUnknownAndRemovedKeys) {
   for (const char* old :
        {"critical_angle_deg: 20", "transducer_period_s: 0.05", "firing_order: [3, 4]"}) {
     const std::string key = std::string(old).substr(0, std::string(old).find(':'));
-    const std::string m = error_of(old);
+    const std::string m = sonar_error_of(old);
     EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar." + key + ": unknown key")) << m;
   }
 }
 
 TEST(SonarOptions, RejectsWrongTypesAndValuesOutOfRange) {
-  EXPECT_TRUE(starts_with(error_of("rays_per_cone: many"),
+  EXPECT_TRUE(starts_with(sonar_error_of("rays_per_cone: many"),
                           "t.yaml:2: sonar.rays_per_cone: expected an integer"));
-  EXPECT_TRUE(starts_with(error_of("multipath: maybe"),
+  EXPECT_TRUE(starts_with(sonar_error_of("multipath: maybe"),
                           "t.yaml:2: sonar.multipath: expected true or false"));
-  EXPECT_TRUE(starts_with(error_of("cycle_ms: fast"),
+  EXPECT_TRUE(starts_with(sonar_error_of("cycle_ms: fast"),
                           "t.yaml:2: sonar.cycle_ms: expected a finite number"));
   const std::vector<std::pair<std::string, std::string>> bad{
       {"beam_sigma_deg: 0", "must be in (0, 90]"},
@@ -354,26 +354,26 @@ TEST(SonarOptions, RejectsWrongTypesAndValuesOutOfRange) {
       {"corner_radius_m: 2", "must be in [0, 1]"}};
   for (const auto& [line, what] : bad) {
     const std::string key = line.substr(0, line.find(':'));
-    const std::string m = error_of(line);
+    const std::string m = sonar_error_of(line);
     EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar." + key + ": " + what)) << m;
   }
 }
 
 TEST(SonarOptions, RejectsMalformedPolling) {
-  std::string m = error_of("polling: [[0, 1], [8, 3]]");
+  std::string m = sonar_error_of("polling: [[0, 1], [8, 3]]");
   EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar.polling[1][1]: array 1 holds transducers 8-15")) << m;
-  m = error_of("polling: [[0, x]]");
+  m = sonar_error_of("polling: [[0, x]]");
   EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar.polling[0][1]: expected an integer")) << m;
-  m = error_of("polling: [1, 2]");
+  m = sonar_error_of("polling: [1, 2]");
   EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar.polling[0]: expected a list")) << m;
-  m = error_of("polling: 3");
+  m = sonar_error_of("polling: 3");
   EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar.polling: expected a list")) << m;
-  m = error_of("polling: [[], [], [], [], []]");
+  m = sonar_error_of("polling: [[], [], [], [], []]");
   EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar.polling: at most 4 sonar arrays")) << m;
-  m = error_of("polling: [[0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]]");
+  m = sonar_error_of("polling: [[0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]]");
   EXPECT_TRUE(starts_with(m, "t.yaml:2: sonar.polling[0]: a polling sequence holds at most 16"))
       << m;
-  m = error_of("polling: [[0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 7]]");
+  m = sonar_error_of("polling: [[0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 7]]");
   EXPECT_EQ(m, "");
 }
 

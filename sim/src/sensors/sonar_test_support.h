@@ -66,6 +66,11 @@ inline int builtin_index(const std::string& name) {
   return -1;
 }
 
+/// The built-in material of that name.
+inline const SonarMaterial& builtin(const char* name) {
+  return builtin_sonar_materials()[static_cast<std::size_t>(builtin_index(name))];
+}
+
 /// The options every worked example assumes, written out so that a change of the defaults does
 /// not move the expected values: sd 6 deg, 21 rays over +/-25 deg (2.5 deg apart, ray 10 on the
 /// axis), 0 dB, corners 20, walk 0.15 m, range gain exponent 1, noise 1 % + 1 cm, 1 % dropouts.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cogmap/sim/world_enclosure.h"
+#include "world/world_test_support.h"
 
 namespace cogmap::sim {
 namespace {
@@ -66,10 +67,7 @@ TEST(WorldEnclosure, ObstaclesCount) {
   EXPECT_EQ(open_directions(w, {8.0, 5.0}), 0);
 }
 
-std::filesystem::path source_dir() {
-  if (const char* env = std::getenv("COGMAP_SOURCE_DIR")) return env;
-  return COGMAP_SOURCE_DIR_FALLBACK;
-}
+using testing::source_dir;
 
 TEST(WorldEnclosure, NoShippedWorldWarns) {
   int count = 0;

@@ -5,6 +5,7 @@
 
 #include "cogmap/sim/world_geometry.h"
 #include "world/polygon_ops.h"
+#include "world/world_test_support.h"
 
 namespace cogmap::sim {
 namespace {
@@ -12,9 +13,7 @@ namespace {
 using mapper::Point2;
 using mapper::Segment;
 
-WorldSpec parse(const std::string& text) {
-  return parse_world(yaml::Node::load_string(text, "g.yaml"));
-}
+using testing::parse;
 
 // True when `surfaces` holds a segment from a to b (in that direction, 1e-9 m).
 bool has_segment(const std::vector<Segment>& surfaces, Point2 a, Point2 b) {

@@ -5,16 +5,15 @@
 #include <string>
 
 #include "cogmap/sim/world_spec.h"
+#include "world/world_test_support.h"
 
 namespace cogmap::sim {
 namespace {
 
-WorldSpec parse(const std::string& text) {
-  return parse_world(yaml::Node::load_string(text, "w.yaml"));
-}
+using testing::parse;
 
 // Parses `text`, expects a ConfigError, returns it for inspection.
-yaml::ConfigError error_of(const std::string& text) {
+yaml::ConfigError config_error_of_world(const std::string& text) {
   try {
     parse(text);
   } catch (const yaml::ConfigError& e) {
@@ -71,49 +70,49 @@ TEST(WorldLoader, DefaultThicknessApplies) {
 }
 
 TEST(WorldLoader, UnknownKeyNamesFileLineAndKey) {
-  const auto e = error_of(kHeader + "start: {x_m: 1, y_m: 1, theta: 0}\n");
+  const auto e = config_error_of_world(kHeader + "start: {x_m: 1, y_m: 1, theta: 0}\n");
   EXPECT_EQ(e.line(), 5);
   EXPECT_EQ(e.key(), "start.theta");
   EXPECT_NE(std::string(e.what()).find("w.yaml:5: start.theta: unknown key"), std::string::npos)
       << e.what();
-  const auto top = error_of(kHeader + "strat: {x_m: 1, y_m: 1}\n");
+  const auto top = config_error_of_world(kHeader + "strat: {x_m: 1, y_m: 1}\n");
   EXPECT_EQ(top.key(), "strat");
   EXPECT_EQ(top.line(), 5);
 }
 
 TEST(WorldLoader, WrongTypeNamesKey) {
-  const auto e = error_of(kHeader + "start: {x_m: one, y_m: 1}\n");
+  const auto e = config_error_of_world(kHeader + "start: {x_m: one, y_m: 1}\n");
   EXPECT_EQ(e.key(), "start.x_m");
   EXPECT_EQ(e.line(), 5);
   EXPECT_NE(std::string(e.what()).find("expected a finite number"), std::string::npos);
-  const auto p =
-      error_of("name: t\nwalls:\n  polylines:\n    - [[0, 0], [1]]\nstart: {x_m: 5, y_m: 5}\n");
+  const auto p = config_error_of_world(
+      "name: t\nwalls:\n  polylines:\n    - [[0, 0], [1]]\nstart: {x_m: 5, y_m: 5}\n");
   EXPECT_EQ(p.key(), "walls.polylines[0][1]");
   EXPECT_EQ(p.line(), 4);
   EXPECT_NE(std::string(p.what()).find("expected a point [x, y]"), std::string::npos);
 }
 
 TEST(WorldLoader, MissingKeyIsAnError) {
-  const auto e = error_of(kHeader);
+  const auto e = config_error_of_world(kHeader);
   EXPECT_NE(std::string(e.what()).find("missing required key 'start'"), std::string::npos);
 }
 
 TEST(WorldLoader, DegenerateWallsAreErrors) {
-  const auto one =
-      error_of("name: t\nwalls:\n  polylines:\n    - [[0, 0]]\nstart: {x_m: 5, y_m: 5}\n");
+  const auto one = config_error_of_world(
+      "name: t\nwalls:\n  polylines:\n    - [[0, 0]]\nstart: {x_m: 5, y_m: 5}\n");
   EXPECT_EQ(one.key(), "walls.polylines[0]");
   EXPECT_EQ(one.line(), 4);
   EXPECT_NE(std::string(one.what()).find("at least 2 points"), std::string::npos);
 
-  const auto zero = error_of(
+  const auto zero = config_error_of_world(
       "name: t\nwalls:\n  polylines:\n    - [[0, 0], [1, 0],\n       [1, 0]]\n"
       "start: {x_m: 5, y_m: 5}\n");
   EXPECT_EQ(zero.key(), "walls.polylines[0][2]");
   EXPECT_EQ(zero.line(), 5);
   EXPECT_NE(std::string(zero.what()).find("zero-length wall segment"), std::string::npos);
 
-  const auto thin =
-      error_of("name: t\nwalls:\n  thickness_m: 0\n  polylines: []\nstart: {x_m: 5, y_m: 5}\n");
+  const auto thin = config_error_of_world(
+      "name: t\nwalls:\n  thickness_m: 0\n  polylines: []\nstart: {x_m: 5, y_m: 5}\n");
   EXPECT_EQ(thin.key(), "walls.thickness_m");
   EXPECT_EQ(thin.line(), 3);
 }
@@ -121,39 +120,44 @@ TEST(WorldLoader, DegenerateWallsAreErrors) {
 TEST(WorldLoader, DegenerateObstaclesAreErrors) {
   const std::string head = kHeader + "obstacles:\n";  // obstacles start on line 6
   const std::string start = "start: {x_m: 1, y_m: 1}\n";
-  const auto box = error_of(head + "  - {box: {center: [5, 3], size: [1, -0.5]}}\n" + start);
+  const auto box =
+      config_error_of_world(head + "  - {box: {center: [5, 3], size: [1, -0.5]}}\n" + start);
   EXPECT_EQ(box.key(), "obstacles[0].box.size");
   EXPECT_EQ(box.line(), 6);
   EXPECT_NE(std::string(box.what()).find("box size must be positive"), std::string::npos);
 
-  const auto circle = error_of(head + "  - {circle: {center: [5, 3], radius_m: 0}}\n" + start);
+  const auto circle =
+      config_error_of_world(head + "  - {circle: {center: [5, 3], radius_m: 0}}\n" + start);
   EXPECT_EQ(circle.key(), "obstacles[0].circle.radius_m");
   EXPECT_NE(std::string(circle.what()).find("radius must be positive"), std::string::npos);
 
-  const auto two = error_of(head + "  - {polygon: [[5, 3], [6, 3]]}\n" + start);
+  const auto two = config_error_of_world(head + "  - {polygon: [[5, 3], [6, 3]]}\n" + start);
   EXPECT_EQ(two.key(), "obstacles[0].polygon");
   EXPECT_NE(std::string(two.what()).find("at least 3"), std::string::npos);
 
-  const auto flat = error_of(head + "  - {polygon: [[5, 3], [6, 3], [7, 3]]}\n" + start);
+  const auto flat =
+      config_error_of_world(head + "  - {polygon: [[5, 3], [6, 3], [7, 3]]}\n" + start);
   EXPECT_NE(std::string(flat.what()).find("zero area"), std::string::npos);
 
   // A lopsided bow tie (non-zero area): edges (5,3)-(7,4) and (7,3)-(5,5) cross.
-  const auto bow = error_of(head + "  - {polygon: [[5, 3], [7, 4], [7, 3], [5, 5]]}\n" + start);
+  const auto bow =
+      config_error_of_world(head + "  - {polygon: [[5, 3], [7, 4], [7, 3], [5, 5]]}\n" + start);
   EXPECT_EQ(bow.line(), 6);
   EXPECT_NE(std::string(bow.what()).find("self-intersecting"), std::string::npos);
 
-  const auto both = error_of(head +
-                             "  - {box: {center: [5, 3], size: [1, 1]}, circle: {center: [5, 3], "
-                             "radius_m: 1}}\n" +
-                             start);
+  const auto both =
+      config_error_of_world(head +
+                            "  - {box: {center: [5, 3], size: [1, 1]}, circle: {center: [5, 3], "
+                            "radius_m: 1}}\n" +
+                            start);
   EXPECT_NE(std::string(both.what()).find("exactly one of"), std::string::npos);
 }
 
 TEST(WorldLoader, StartInsideObstacleIsAnError) {
-  const auto e = error_of(kHeader +
-                          "obstacles:\n"
-                          "  - {box: {center: [2, 2], size: [2, 2]}}\n"  // line 6
-                          "start: {x_m: 2.0, y_m: 2.5}\n");              // line 7
+  const auto e = config_error_of_world(kHeader +
+                                       "obstacles:\n"
+                                       "  - {box: {center: [2, 2], size: [2, 2]}}\n"  // line 6
+                                       "start: {x_m: 2.0, y_m: 2.5}\n");              // line 7
   EXPECT_EQ(e.line(), 7);
   EXPECT_EQ(e.key(), "start");
   EXPECT_NE(std::string(e.what()).find("w.yaml:7: start: start (2.00, 2.50) is inside obstacle "
@@ -164,13 +168,13 @@ TEST(WorldLoader, StartInsideObstacleIsAnError) {
 
 TEST(WorldLoader, StartTooCloseToWallIsAnError) {
   // The wall's inner face is at y = 0.06; 0.2 m from it is less than half the robot's width.
-  const auto e = error_of(kHeader + "start: {x_m: 5, y_m: 0.26}\n");
+  const auto e = config_error_of_world(kHeader + "start: {x_m: 5, y_m: 0.26}\n");
   EXPECT_EQ(e.line(), 5);
   EXPECT_NE(std::string(e.what()).find("is only 0.200 m from wall walls.polylines[0] (line 4)"),
             std::string::npos)
       << e.what();
   EXPECT_NO_THROW(parse(kHeader + "start: {x_m: 5, y_m: 0.32}\n"));
-  const auto inside = error_of(kHeader + "start: {x_m: 5, y_m: 0.0}\n");
+  const auto inside = config_error_of_world(kHeader + "start: {x_m: 5, y_m: 0.0}\n");
   EXPECT_NE(std::string(inside.what()).find("is inside wall"), std::string::npos);
 }
 
@@ -243,8 +247,8 @@ TEST(WorldLoader, WorldPolylineAndObstacleMaterials) {
   EXPECT_EQ(w.obstacles[1].material, 1);
   EXPECT_EQ(w.obstacles[2].material, 4);
   EXPECT_TRUE(std::holds_alternative<PolygonObstacle>(w.obstacles[2].shape));
-  const auto alone =
-      error_of(kHeader + "obstacles:\n  - {material: glass}\nstart: {x_m: 1, y_m: 1}\n");
+  const auto alone = config_error_of_world(
+      kHeader + "obstacles:\n  - {material: glass}\nstart: {x_m: 1, y_m: 1}\n");
   EXPECT_NE(std::string(alone.what()).find("exactly one of box, circle, polygon"),
             std::string::npos)
       << alone.what();
@@ -296,7 +300,7 @@ TEST(WorldLoader, MaterialsTableDefinesAndOverrides) {
 TEST(WorldLoader, BadMaterialsNameFileLineKeyAndTheKnownNames) {
   const std::string known = "(known: painted_wall, wood, glass, metal, fabric)";
   const std::string start = "start: {x_m: 5, y_m: 3}\n";
-  const auto wall = error_of(
+  const auto wall = config_error_of_world(
       "name: t\nwalls:\n  polylines:\n    - {points: [[0, 0], [10, 0]], material: glas}\n" + start);
   EXPECT_EQ(wall.line(), 4);
   EXPECT_EQ(wall.key(), "walls.polylines[0].material");
@@ -304,24 +308,25 @@ TEST(WorldLoader, BadMaterialsNameFileLineKeyAndTheKnownNames) {
                 .find("w.yaml:4: walls.polylines[0].material: unknown material 'glas' " + known),
             std::string::npos)
       << wall.what();
-  const auto obstacle = error_of(
+  const auto obstacle = config_error_of_world(
       kHeader + "obstacles:\n  - {box: {center: [5, 3], size: [1, 1]}, material: steel}\n" +
       "start: {x_m: 1, y_m: 1}\n");
   EXPECT_EQ(obstacle.line(), 6);
   EXPECT_EQ(obstacle.key(), "obstacles[0].material");
   EXPECT_NE(std::string(obstacle.what()).find("unknown material 'steel' " + known),
             std::string::npos);
-  const auto world = error_of("name: t\nmaterial: plaster\n" + kHeader.substr(8) + start);
+  const auto world =
+      config_error_of_world("name: t\nmaterial: plaster\n" + kHeader.substr(8) + start);
   EXPECT_EQ(world.line(), 2);
   EXPECT_EQ(world.key(), "material");
   EXPECT_NE(std::string(world.what()).find("unknown material 'plaster' " + known),
             std::string::npos);
-  const auto like =
-      error_of("name: t\nmaterials:\n  frosted: {like: frost}\n" + kHeader.substr(8) + start);
+  const auto like = config_error_of_world("name: t\nmaterials:\n  frosted: {like: frost}\n" +
+                                          kHeader.substr(8) + start);
   EXPECT_EQ(like.line(), 3);
   EXPECT_EQ(like.key(), "materials.frosted.like");
   // The list names the world's own materials too.
-  const auto own = error_of(
+  const auto own = config_error_of_world(
       "name: t\nmaterials:\n  felt: {diffuse_strength: 1}\n"
       "walls:\n  polylines:\n    - {points: [[0, 0], [10, 0]], "
       "material: felted}\n" +
@@ -332,16 +337,17 @@ TEST(WorldLoader, BadMaterialsNameFileLineKeyAndTheKnownNames) {
                       "fabric, felt)"),
             std::string::npos)
       << own.what();
-  const auto key =
-      error_of("name: t\nmaterials:\n  felt: {roughness: 1}\n" + kHeader.substr(8) + start);
+  const auto key = config_error_of_world("name: t\nmaterials:\n  felt: {roughness: 1}\n" +
+                                         kHeader.substr(8) + start);
   EXPECT_EQ(key.key(), "materials.felt.roughness");
   EXPECT_NE(std::string(key.what()).find("unknown key"), std::string::npos);
-  const auto range = error_of("name: t\nmaterials:\n  felt: {mirror_reflectivity: 1.5}\n" +
-                              kHeader.substr(8) + start);
+  const auto range = config_error_of_world(
+      "name: t\nmaterials:\n  felt: {mirror_reflectivity: 1.5}\n" + kHeader.substr(8) + start);
   EXPECT_EQ(range.line(), 3);
   EXPECT_EQ(range.key(), "materials.felt.mirror_reflectivity");
   EXPECT_NE(std::string(range.what()).find("must be in [0, 1]"), std::string::npos);
-  const auto list = error_of("name: t\nmaterials: [glass]\n" + kHeader.substr(8) + start);
+  const auto list =
+      config_error_of_world("name: t\nmaterials: [glass]\n" + kHeader.substr(8) + start);
   EXPECT_EQ(list.key(), "materials");
   EXPECT_NE(std::string(list.what()).find("expected a map"), std::string::npos);
 }

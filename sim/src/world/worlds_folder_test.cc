@@ -7,14 +7,12 @@
 
 #include "cogmap/sim/physics_world.h"
 #include "cogmap/sim/world_geometry.h"
+#include "world/world_test_support.h"
 
 namespace cogmap::sim {
 namespace {
 
-std::filesystem::path source_dir() {
-  if (const char* env = std::getenv("COGMAP_SOURCE_DIR")) return env;
-  return COGMAP_SOURCE_DIR_FALLBACK;
-}
+using testing::source_dir;
 
 TEST(WorldsFolder, EveryWorldLoads) {
   const std::filesystem::path dir = source_dir() / "worlds";
