@@ -9,7 +9,7 @@
 namespace cogmap::hw::detail {
 namespace {
 
-std::string num(double v) {
+std::string number_text(double v) {
   std::ostringstream out;
   out << v;
   return out.str();
@@ -17,8 +17,8 @@ std::string num(double v) {
 
 void in_range(double v, double lo, double hi, const char* field, const std::string& where) {
   if (!(std::isfinite(v) && v >= lo && v <= hi)) {
-    throw LogError(where + ": " + field + " must be in [" + num(lo) + ", " + num(hi) + "], got " +
-                   num(v));
+    throw LogError(where + ": " + field + " must be in [" + number_text(lo) + ", " +
+                   number_text(hi) + "], got " + number_text(v));
   }
 }
 
@@ -170,17 +170,17 @@ void check_frame(const mapper::SensorFrame& f, const mapper::SensorFrame* previo
   if (previous) {
     const double dt_s = f.time_s - previous->time_s;
     if (dt_s < 0.0) {
-      throw LogError(where + ": time goes backwards (" + num(f.time_s) + " s after " +
-                     num(previous->time_s) + " s)");
+      throw LogError(where + ": time goes backwards (" + number_text(f.time_s) + " s after " +
+                     number_text(previous->time_s) + " s)");
     }
     const double jump_m = std::hypot(f.odometry.x_m - previous->odometry.x_m,
                                      f.odometry.y_m - previous->odometry.y_m);
     const double allowed_m =
         limits.jump_slack_m + limits.speed_factor * geometry.max_speed_mps * dt_s;
     if (jump_m > allowed_m) {
-      throw LogError(where + ": odometry jumps " + num(jump_m) + " m in " + num(dt_s) +
-                     " s (at most " + num(allowed_m) + " m at max_speed_mps " +
-                     num(geometry.max_speed_mps) + ")");
+      throw LogError(where + ": odometry jumps " + number_text(jump_m) + " m in " +
+                     number_text(dt_s) + " s (at most " + number_text(allowed_m) +
+                     " m at max_speed_mps " + number_text(geometry.max_speed_mps) + ")");
     }
   }
 }

@@ -13,7 +13,7 @@ namespace cogmap::hw {
 namespace {
 
 // Shortest decimal that reads back to the same double (std::to_chars round-trip guarantee).
-std::string num(double v) {
+std::string shortest_number_text(double v) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
@@ -110,36 +110,41 @@ constexpr HeaderKey kHeaderKeys[] = {
 
 std::string format_log_header(const mapper::RobotGeometry& g) {
   std::string s = std::string(kLogMagic) + " " + std::to_string(kLogVersion);
-  for (const HeaderKey& k : kHeaderKeys) s += " " + std::string(k.name) + "=" + num(g.*k.field);
+  for (const HeaderKey& k : kHeaderKeys)
+    s += " " + std::string(k.name) + "=" + shortest_number_text(g.*k.field);
   s += " sonars=" + std::to_string(g.sonars.size());
   for (const mapper::SonarMount& m : g.sonars) {
-    s += " " + num(m.x_m) + "," + num(m.y_m) + "," + num(m.heading_rad);
+    s += " " + shortest_number_text(m.x_m) + "," + shortest_number_text(m.y_m) + "," +
+         shortest_number_text(m.heading_rad);
   }
   return s;
 }
 
 std::string format_frame_line(const mapper::SensorFrame& f) {
-  std::string s = "F " + num(f.time_s) + " " + num(f.odometry.x_m) + " " + num(f.odometry.y_m) +
-                  " " + num(f.odometry.theta_rad) + " " + (f.stall_left ? "1" : "0") + " " +
-                  (f.stall_right ? "1" : "0") + " ";
+  std::string s =
+      "F " + shortest_number_text(f.time_s) + " " + shortest_number_text(f.odometry.x_m) + " " +
+      shortest_number_text(f.odometry.y_m) + " " + shortest_number_text(f.odometry.theta_rad) +
+      " " + (f.stall_left ? "1" : "0") + " " + (f.stall_right ? "1" : "0") + " ";
   if (f.true_pose) {
-    s += num(f.true_pose->x_m) + "," + num(f.true_pose->y_m) + "," + num(f.true_pose->theta_rad);
+    s += shortest_number_text(f.true_pose->x_m) + "," + shortest_number_text(f.true_pose->y_m) +
+         "," + shortest_number_text(f.true_pose->theta_rad);
   } else {
     s += "-";
   }
   s += " " + std::to_string(f.sonar.size());
   for (const mapper::SonarReading& r : f.sonar) {
-    s += " " + std::to_string(r.index) + "," + num(r.range_m) + "," + (r.echo ? "1" : "0") + "," +
-         num(r.time_s);
+    s += " " + std::to_string(r.index) + "," + shortest_number_text(r.range_m) + "," +
+         (r.echo ? "1" : "0") + "," + shortest_number_text(r.time_s);
   }
   return s;
 }
 
 std::string format_command_line(double time_s, const mapper::VelocityCommand& cmd) {
-  return "C " + num(time_s) + " " + num(cmd.v_mps) + " " + num(cmd.w_radps);
+  return "C " + shortest_number_text(time_s) + " " + shortest_number_text(cmd.v_mps) + " " +
+         shortest_number_text(cmd.w_radps);
 }
 
-std::string format_stop_line(double time_s) { return "S " + num(time_s); }
+std::string format_stop_line(double time_s) { return "S " + shortest_number_text(time_s); }
 
 LogReader::LogReader(const std::filesystem::path& path, const LogLimits& limits)
     : path_(path), limits_(limits) {

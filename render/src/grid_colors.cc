@@ -7,7 +7,7 @@
 namespace cogmap::render {
 namespace {
 
-Rgb mix(Rgb a, Rgb b, float t) {
+Rgb mix_linear(Rgb a, Rgb b, float t) {
   return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
 }
 
@@ -20,11 +20,11 @@ Rgb grid_cell_color(float value, const Style& style) {
   if (value < 0.0f) {
     // Even one "empty" reading reads clearly lighter than unexplored; the floor is lightest.
     const float t = std::min(value / mapper::kHistogramFloor, 1.0f);
-    return mix(style.grid_unexplored, style.grid_empty, 0.6f + 0.4f * t);
+    return mix_linear(style.grid_unexplored, style.grid_empty, 0.6f + 0.4f * t);
   }
   // Occupied: the grey darkens with the count so ε-crossing cells stand out (cap at 15).
   const float t = std::min(value / mapper::kHistogramMax, 1.0f);
-  return mix(style.grid_unexplored, style.grid_occupied, 0.25f + 0.75f * t);
+  return mix_linear(style.grid_unexplored, style.grid_occupied, 0.25f + 0.75f * t);
 }
 
 }  // namespace cogmap::render

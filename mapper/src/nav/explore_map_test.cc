@@ -32,7 +32,7 @@ SensorFrame frame(std::vector<SonarReading> sonar) {
   return f;
 }
 
-SonarReading echo(double range_m) { return {0, range_m, true, 0.0}; }
+SonarReading echo_ahead(double range_m) { return {0, range_m, true, 0.0}; }
 SonarReading silence() { return {0, 5.0, false, 0.0}; }
 
 // A map whose cell centres lie on multiples of 0.2 m (the first growth puts cell (0, 0)'s
@@ -71,7 +71,7 @@ class ExploreMap : public ::testing::Test {
 };
 
 TEST_F(ExploreMap, EchoHitsTheAxisCellAndSweepsTheConeBeforeIt) {
-  ping({echo(1.0)});
+  ping({echo_ahead(1.0)});
   // The echo's cell: (weight_range_m / 1.0)² = 1, seen (1.0 <= wall_sense_m), an obstacle.
   EXPECT_FLOAT_EQ(hits(1.0, 0.0), 1.0f);
   EXPECT_FLOAT_EQ(misses(1.0, 0.0), 0.0f);
@@ -116,26 +116,26 @@ TEST_F(ExploreMap, EchoesOutweighingTheFreeSweepsMakeAnObstacle) {
   for (int i = 0; i < 3; ++i) ping({silence()});
   ASSERT_FLOAT_EQ(misses(1.0, 0.0), 3.0f);
   ASSERT_FLOAT_EQ(hits(1.0, 0.0), 0.0f);
-  ping({echo(1.0)});
+  ping({echo_ahead(1.0)});
   EXPECT_FLOAT_EQ(hits(1.0, 0.0), 1.0f);
   EXPECT_FALSE(occupied(1.0, 0.0));  // 1 < occupied_ratio 0.5 × 3
-  ping({echo(1.0)});
+  ping({echo_ahead(1.0)});
   EXPECT_FLOAT_EQ(hits(1.0, 0.0), 2.0f);
   EXPECT_FLOAT_EQ(misses(1.0, 0.0), 3.0f);
   EXPECT_TRUE(occupied(1.0, 0.0));  // 2 >= 1.5 and >= occupied_min_weight
 }
 
 TEST_F(ExploreMap, FarEchoesNeedTwoToReachTheMinimumWeight) {
-  ping({echo(2.0)});
+  ping({echo_ahead(2.0)});
   EXPECT_FLOAT_EQ(hits(2.0, 0.0), 0.25f);  // (1 / 2)²
   EXPECT_FALSE(occupied(2.0, 0.0));        // < occupied_min_weight 0.5, with no misses
-  ping({echo(2.0)});
+  ping({echo_ahead(2.0)});
   EXPECT_FLOAT_EQ(hits(2.0, 0.0), 0.5f);
   EXPECT_TRUE(occupied(2.0, 0.0));
 }
 
 TEST_F(ExploreMap, FarEchoIsHitButNotSeenWhileTheFloorBeforeItIs) {
-  ping({echo(2.0)});
+  ping({echo_ahead(2.0)});
   // At 2 m the ±6° arc spans ±0.21 m: three cells, each (1 / 2)², none seen (> wall_sense_m).
   for (double y : {-0.2, 0.0, 0.2}) {
     EXPECT_FLOAT_EQ(hits(2.0, y), 0.25f) << y;
@@ -154,17 +154,17 @@ TEST_F(ExploreMap, FarEchoIsHitButNotSeenWhileTheFloorBeforeItIs) {
 }
 
 TEST_F(ExploreMap, WallSenseLimitsWhichEchoesSeeTheirCell) {
-  ping({echo(1.2)});
+  ping({echo_ahead(1.2)});
   EXPECT_TRUE(seen(1.2, 0.0));  // 1.2 <= wall_sense_m 1.3
   Map far = pinned_map();
-  far.add_frame(frame({echo(1.4)}), {}, robot_);
+  far.add_frame(frame({echo_ahead(1.4)}), {}, robot_);
   const Map::Cell c = far.cell_of({1.4, 0.0});
   EXPECT_NEAR(far.hit_weight(c), 1.0 / (1.4 * 1.4), 1e-5);
   EXPECT_FALSE(far.seen(c));  // 1.4 > 1.3
 }
 
 TEST_F(ExploreMap, EchoBeyondOccupancyRangeMarksNoHit) {
-  ping({echo(3.4)});  // > occupancy_max_range_m 3.0: swept free up to free_sense_m only
+  ping({echo_ahead(3.4)});  // > occupancy_max_range_m 3.0: swept free up to free_sense_m only
   EXPECT_FLOAT_EQ(total_hits(), 0.0f);
   EXPECT_TRUE(seen(2.4, 0.0));
   EXPECT_FALSE(seen(2.6, 0.0));
@@ -188,10 +188,10 @@ TEST_F(ExploreMap, SilentPingSweepsFreeOnlyToNoEchoFree) {
 }
 
 TEST_F(ExploreMap, ObstacleHidesWhatLiesBehindIt) {
-  ping({echo(1.0)});
+  ping({echo_ahead(1.0)});
   ASSERT_TRUE(occupied(1.0, 0.0));
   const float before = misses(0.6, 0.0);
-  ping({echo(2.2)});
+  ping({echo_ahead(2.2)});
   EXPECT_FALSE(seen(1.6, 0.0));  // behind the obstacle at 1.0 m
   EXPECT_FLOAT_EQ(misses(1.6, 0.0), 0.0f);
   EXPECT_FALSE(seen(1.4, 0.0));
@@ -200,13 +200,13 @@ TEST_F(ExploreMap, ObstacleHidesWhatLiesBehindIt) {
 
   // Without the obstacle the same echo sweeps 1.6 m free and seen.
   Map open = pinned_map();
-  open.add_frame(frame({echo(2.2)}), {}, robot_);
+  open.add_frame(frame({echo_ahead(2.2)}), {}, robot_);
   EXPECT_TRUE(open.seen(open.cell_of({1.6, 0.0})));
   EXPECT_NEAR(open.miss_weight(open.cell_of({1.6, 0.0})), 1.0 / (1.6 * 1.6), 1e-5);
 }
 
 TEST_F(ExploreMap, MarkBodyClearsEchoesAndMarksTheDiscSeen) {
-  ping({echo(1.0)});
+  ping({echo_ahead(1.0)});
   ASSERT_TRUE(occupied(1.0, 0.0));
   ASSERT_FALSE(seen(1.0, 0.2));
   ASSERT_FALSE(seen(1.4, 0.0));
@@ -227,7 +227,7 @@ TEST_F(ExploreMap, MarkBodyClearsEchoesAndMarksTheDiscSeen) {
 }
 
 TEST_F(ExploreMap, RepeatedEvidenceIsHalvedAtTheCap) {
-  ping({echo(0.4)});
+  ping({echo_ahead(0.4)});
   ASSERT_FLOAT_EQ(hits(0.4, 0.0), 4.0f);  // (1 / 0.4)² capped at max_weight
   const float expected[] = {4.0f, 8.0f, 12.0f};
   for (float m : expected) {
@@ -242,11 +242,11 @@ TEST_F(ExploreMap, RepeatedEvidenceIsHalvedAtTheCap) {
 }
 
 TEST_F(ExploreMap, GrowingKeepsTheLatticeAndEarlierCells) {
-  ping({echo(1.0)});
+  ping({echo_ahead(1.0)});
   const int width = map_.width(), height = map_.height();
   const float at_06 = misses(0.6, 0.0);
   const std::size_t before = map_.seen_count();
-  ping({echo(1.0)}, {-30.0, -20.0, 0.0});  // grows towards -x and -y: the old cells move
+  ping({echo_ahead(1.0)}, {-30.0, -20.0, 0.0});  // grows towards -x and -y: the old cells move
   EXPECT_GT(map_.width(), width);
   EXPECT_GT(map_.height(), height);
   // The far echo's cell, a whole number of cells from the first ones.
@@ -276,7 +276,7 @@ TEST_F(ExploreMap, TheCentresTrailOutlastsTheEchoesPaintedOnIt) {
   EXPECT_FALSE(map_.traversed(cell({1.2, 0.0})));  // under the body, not under its centre
   EXPECT_TRUE(seen(1.2, 0.0));
   // Later, from elsewhere, echoes paint the cell: an obstacle for the map, still the trail.
-  for (int k = 0; k < 5; ++k) ping({echo(1.0)});  // 5 × weight 1 ≥ half the body's 8
+  for (int k = 0; k < 5; ++k) ping({echo_ahead(1.0)});  // 5 × weight 1 ≥ half the body's 8
   EXPECT_TRUE(occupied(1.0, 0.0));
   EXPECT_TRUE(map_.traversed(cell({1.0, 0.0})));
   EXPECT_FALSE(map_.traversed(cell({0.6, 0.0})));  // swept, never stood on
@@ -287,10 +287,10 @@ TEST_F(ExploreMap, NeverGrowsBeyondMaxSpan) {
   options.max_span_m = 30.0;
   Map map = pinned_map(options);
   const RobotGeometry& robot = robot_;
-  map.add_frame(frame({echo(1.0)}), {}, robot);
+  map.add_frame(frame({echo_ahead(1.0)}), {}, robot);
   const std::size_t before = map.seen_count();
   const int width = map.width();
-  map.add_frame(frame({echo(1.0)}), {30.0, -20.0, 0.0}, robot);
+  map.add_frame(frame({echo_ahead(1.0)}), {30.0, -20.0, 0.0}, robot);
   EXPECT_EQ(map.width(), width);
   EXPECT_EQ(map.seen_count(), before);
   EXPECT_FLOAT_EQ(map.hit_weight(map.cell_of({31.0, -20.0})), 0.0f);
@@ -310,32 +310,32 @@ TEST_F(ExploreMap, InvalidReadingsChangeNothing) {
   EXPECT_FLOAT_EQ(total_hits(), 0.0f);
   EXPECT_FLOAT_EQ(misses(0.4, 0.0), 0.0f);
   // The same frame with one valid reading does change the map.
-  ping({{2, 1.0, true, 0.0}, echo(1.0)});
+  ping({{2, 1.0, true, 0.0}, echo_ahead(1.0)});
   EXPECT_GT(map_.seen_count(), 1u);
   EXPECT_FLOAT_EQ(total_hits(), 1.0f);
 }
 
 TEST_F(ExploreMap, ReadingBeyondMaxRangeIsNoEcho) {
-  ping({echo(5.5)});  // > sonar_max_range_m 5: as if silent
+  ping({echo_ahead(5.5)});  // > sonar_max_range_m 5: as if silent
   EXPECT_FLOAT_EQ(total_hits(), 0.0f);
   EXPECT_TRUE(seen(1.4, 0.0));
   EXPECT_FALSE(seen(1.6, 0.0));
   EXPECT_EQ(map_.seen_count(), 14u);  // as in SilentPingSweepsFreeOnlyToNoEchoFree
   // An echo at exactly max range is an echo: too far to hit, but it sweeps to free_sense_m.
   Map at_max = pinned_map();
-  at_max.add_frame(frame({echo(5.0)}), {}, robot_);
+  at_max.add_frame(frame({echo_ahead(5.0)}), {}, robot_);
   EXPECT_TRUE(at_max.seen(at_max.cell_of({2.0, 0.0})));
   EXPECT_TRUE(at_max.seen(at_max.cell_of({2.4, 0.0})));
 }
 
 TEST_F(ExploreMap, FarOffOrNonFinitePosesChangeNothingAndMapToNoCell) {
-  ping({echo(1.0)});
+  ping({echo_ahead(1.0)});
   const std::size_t before = map_.seen_count();
   const int width = map_.width();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  ping({echo(1.0)}, {nan, 0.0, 0.0});
-  ping({echo(1.0)}, {0.0, 0.0, nan});
-  ping({echo(1.0)}, {1e12, -1e12, 0.0});
+  ping({echo_ahead(1.0)}, {nan, 0.0, 0.0});
+  ping({echo_ahead(1.0)}, {0.0, 0.0, nan});
+  ping({echo_ahead(1.0)}, {1e12, -1e12, 0.0});
   map_.mark_body(Point2(nan, 1.0), 0.3);
   EXPECT_EQ(map_.seen_count(), before);
   EXPECT_EQ(map_.width(), width);
