@@ -47,6 +47,9 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "em_clutter_weight",
                      "em_weight_by_length",
                      "em_min_direction_sigma_deg",
+                     "em_echo_refit_band_m",
+                     "em_echo_refit_min_echoes",
+                     "em_echo_refit_max_turn_deg",
                      "translation",
                      "translation_max_offset_m",
                      "translation_moves_estimate",
@@ -180,6 +183,17 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.localizer.min_direction_sigma_rad =
       number_in(block, "em_min_direction_sigma_deg", 0.0, 45.0,
                 o.localizer.min_direction_sigma_rad * 180.0 / std::numbers::pi) *
+      std::numbers::pi / 180.0;
+  o.localizer.echo_refit.band_m =
+      number_in(block, "em_echo_refit_band_m", 0.0, 1.0, o.localizer.echo_refit.band_m);
+  if (const auto n = block.child("em_echo_refit_min_echoes")) {
+    const int echoes = n->as<int>();
+    if (echoes < 2 || echoes > 100000) n->fail("em_echo_refit_min_echoes must be in [2, 100000]");
+    o.localizer.echo_refit.min_echoes = echoes;
+  }
+  o.localizer.echo_refit.max_turn_rad =
+      number_in(block, "em_echo_refit_max_turn_deg", 0.0, 45.0,
+                o.localizer.echo_refit.max_turn_rad * 180.0 / std::numbers::pi) *
       std::numbers::pi / 180.0;
   o.translation.enabled = block.get_or<bool>("translation", o.translation.enabled);
   o.translation.moves_estimate =

@@ -49,6 +49,26 @@ TEST(MapperConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_FALSE(thesis.mapper.localizer.weight_by_length);
   EXPECT_NE(error_of(p, {"mapper.em_clutter_weight=1"}), "no error");
   EXPECT_NE(error_of(p, {"mapper.em_clutter_weight=nan"}), "no error");
+  // EM's wall directions from the echoes (docs/algorithms.md, "Wall directions from the
+  // echoes"): off (the thesis's fitted lines); 20 echoes and 5° unless set.
+  EXPECT_DOUBLE_EQ(defaults.mapper.localizer.echo_refit.band_m, 0.0);
+  EXPECT_EQ(defaults.mapper.localizer.echo_refit.min_echoes, 20);
+  EXPECT_NEAR(defaults.mapper.localizer.echo_refit.max_turn_rad, 5.0 * std::numbers::pi / 180.0,
+              1e-6);
+  const Experiment refit =
+      load_experiment(p, {"mapper.em_echo_refit_band_m=0.12", "mapper.em_echo_refit_min_echoes=40",
+                          "mapper.em_echo_refit_max_turn_deg=3"});
+  EXPECT_DOUBLE_EQ(refit.mapper.localizer.echo_refit.band_m, 0.12);
+  EXPECT_EQ(refit.mapper.localizer.echo_refit.min_echoes, 40);
+  EXPECT_NEAR(refit.mapper.localizer.echo_refit.max_turn_rad, 3.0 * std::numbers::pi / 180.0,
+              1e-12);
+  EXPECT_NE(error_of(p, {"mapper.em_echo_refit_band_m=-0.1"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.em_echo_refit_band_m=2"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.em_echo_refit_min_echoes=1"}).find("[2, 100000]"),
+            std::string::npos);
+  EXPECT_NE(error_of(p, {"mapper.em_echo_refit_min_echoes=2.5"}).find("expected an integer"),
+            std::string::npos);
+  EXPECT_NE(error_of(p, {"mapper.em_echo_refit_max_turn_deg=50"}), "no error");
   // Scan matching: off; 1 m or half a radian, 100 echoes, 3 000 readings of memory unless set.
   EXPECT_FALSE(defaults.mapper.scan_match.enabled);
   EXPECT_EQ(defaults.mapper.scan_match.min_window_echoes, 100u);

@@ -9,6 +9,7 @@ mapper::MapperOptions plain_mapper_options(const mapper::MapperOptions& map) {
   plain.glimpse = library.glimpse;
   plain.odometry_calibration = library.odometry_calibration;
   plain.translation.moves_estimate = library.translation.moves_estimate;
+  plain.localizer.echo_refit = library.localizer.echo_refit;
   return plain;
 }
 
@@ -16,7 +17,8 @@ bool has_map_only_refinements(const mapper::MapperOptions& map) {
   const mapper::MapperOptions library;
   return map.scan_match.enabled || map.glimpse.enabled ||
          map.odometry_calibration.curvature_gain != library.odometry_calibration.curvature_gain ||
-         map.translation.moves_estimate != library.translation.moves_estimate;
+         map.translation.moves_estimate != library.translation.moves_estimate ||
+         map.localizer.echo_refit.band_m != library.localizer.echo_refit.band_m;
 }
 
 }  // namespace cogmap::experiments

@@ -13,6 +13,8 @@ mapper::MapperOptions refined() {
   o.glimpse.enabled = true;
   o.odometry_calibration.curvature_gain = 0.066;
   o.translation.moves_estimate = true;
+  o.localizer.echo_refit.band_m = 0.12;
+  o.localizer.echo_refit.min_echoes = 40;
   o.translation.max_offset_m = 0.7;
   o.max_room_travel_m = 4.5;
   o.builder.occupied_threshold = 5.0;
@@ -29,6 +31,9 @@ TEST(PlainMapperOptions, TheMapOnlyRefinementsGoBackToTheLibrarysDefaults) {
   EXPECT_EQ(plain.glimpse.enabled, library.glimpse.enabled);
   EXPECT_EQ(plain.odometry_calibration.curvature_gain, 0.0);
   EXPECT_EQ(plain.translation.moves_estimate, library.translation.moves_estimate);
+  EXPECT_EQ(plain.localizer.echo_refit.band_m, library.localizer.echo_refit.band_m);
+  EXPECT_EQ(plain.localizer.echo_refit.min_echoes, library.localizer.echo_refit.min_echoes);
+  EXPECT_EQ(plain.localizer.echo_refit.band_m, 0.0);
   EXPECT_FALSE(plain.scan_match.enabled);
   EXPECT_FALSE(plain.glimpse.enabled);
   EXPECT_FALSE(plain.translation.moves_estimate);
@@ -61,9 +66,13 @@ TEST(PlainMapperOptions, EachRefinementCountsAndNothingElseDoes) {
   o = library;
   o.translation.moves_estimate = true;
   EXPECT_TRUE(has_map_only_refinements(o));
+  o = library;
+  o.localizer.echo_refit.band_m = 0.12;
+  EXPECT_TRUE(has_map_only_refinements(o));
   // A switched-off matcher's settings, and what both mappers share, are no refinement.
   o = library;
   o.scan_match.shift = false;
+  o.localizer.echo_refit.min_echoes = 40;  // its settings while off
   o.max_room_travel_m = 4.5;
   o.builder.occupied_threshold = 5.0;
   EXPECT_FALSE(has_map_only_refinements(o));

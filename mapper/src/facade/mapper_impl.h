@@ -126,6 +126,19 @@ struct Mapper::Impl {
     return correction.compose(odometry_world(odometry));
   }
 
+  /// The end point of `reading`, placed at `at` on its transducer's axis, into the room's echoes
+  /// (a reading without an echo, at or past the range limit, or of no known transducer: none).
+  void keep_echo(const Pose2& at, const SonarReading& reading) {
+    if (!reading.echo || !(reading.range_m > 0.0) || !(reading.range_m < robot.sonar_max_range_m) ||
+        reading.index < 0 || static_cast<std::size_t>(reading.index) >= robot.sonars.size()) {
+      return;
+    }
+    const SonarMount& mount = robot.sonars[static_cast<std::size_t>(reading.index)];
+    const Point2 transducer = at.transform(Point2(mount.x_m, mount.y_m));
+    const double axis_rad = at.theta_rad + mount.heading_rad;
+    room.add_echo(transducer + reading.range_m * Point2(std::cos(axis_rad), std::sin(axis_rad)));
+  }
+
   void integrate(const SensorFrame& frame, const Pose2& pose) {
     const Pose2 previous = last_estimate.value_or(pose);
     const double span_s = frame.time_s - last_time_s;
@@ -137,6 +150,7 @@ struct Mapper::Impl {
       }
       const Pose2 at = facade_detail::interpolate(previous, pose, t);
       if (room.grid().integrate(at, reading)) ++stats.readings_used;
+      if (options.localizer.echo_refit.band_m > 0.0) keep_echo(at, reading);
       if (options.glimpse.enabled) glimpse.integrate(at, reading);
       if (options.scan_match.enabled) scan_match.add(at, reading, room.id());
     }

@@ -95,9 +95,15 @@ Localization Mapper::Impl::localize(const Asr& asr, const AsrTrace& trace) const
     const double room_sigma = heading_drift_sigma_rad(drift, turned, path_length_m(asr.path));
     prior.sigma_rad = std::sqrt(heading_variance_rad2 + room_sigma * room_sigma);
   }
-  // The new room's local frame is the current estimate frame, so its walls are already in
-  // world-estimate coordinates.
-  const Localization fix = localizer.estimate(reference, accepted_walls(trace), prior);
+  // The new room's local frame is the current estimate frame, so its walls (and its echoes) are
+  // already in world-estimate coordinates.
+  const EchoRefitOptions& refit = options.localizer.echo_refit;
+  const Localization fix =
+      refit.band_m > 0.0
+          ? localizer.estimate(reference,
+                               refit_wall_directions(accepted_walls(trace), room.echoes(), refit),
+                               prior)
+          : localizer.estimate(reference, accepted_walls(trace), prior);
   return fix;
 }
 

@@ -10,6 +10,7 @@ void RoomRecorder::start(int id, double time_s, const Pose2& pose, const Exit& e
   parent_ = parent;
   path_.clear();
   travelled_m_ = 0.0;
+  echoes_.clear();
   grid_->reset(pose.translation());
   visit(pose);
 }

@@ -31,6 +31,10 @@ class RoomRecorder {
   const std::vector<Point2>& path() const { return path_; }
   /// Distance the robot's centre travelled in this room, metres.
   double travelled_m() const { return travelled_m_; }
+  /// The end point of an echo heard in this room (estimate frame), kept for EM's wall
+  /// directions (LocalizerOptions::echo_refit); forgotten when the next room starts.
+  void add_echo(const Point2& end_point) { echoes_.push_back(end_point); }
+  const std::vector<Point2>& echoes() const { return echoes_; }
 
  private:
   std::unique_ptr<GridUpdater> grid_;
@@ -41,6 +45,7 @@ class RoomRecorder {
   std::optional<int> parent_;
   std::vector<Point2> path_;
   double travelled_m_ = 0.0;
+  std::vector<Point2> echoes_;
 };
 
 }  // namespace cogmap::mapper::internal

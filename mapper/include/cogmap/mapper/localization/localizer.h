@@ -7,6 +7,7 @@
 #include <span>
 
 #include "cogmap/mapper/asr/asr.h"
+#include "cogmap/mapper/localization/echo_refit.h"
 #include "cogmap/mapper/localization/em.h"
 
 namespace cogmap::mapper {
@@ -87,6 +88,10 @@ struct LocalizerOptions {
   double reference_bin_rad = 0.0;
   /// The odometry drift model the mapper facade turns a room's path into a RotationPrior with.
   HeadingDriftModel drift;
+  /// The new room's wall directions refitted to its echoes before EM measures its rotation
+  /// (echo_refit.h; the mapper facade keeps the room's echo endpoints while it is mapped). Off
+  /// by default: the thesis measures the fitted lines.
+  EchoRefitOptions echo_refit;
 };
 
 /// What odometry says about the rotation between the new ASR's frame and the reference's:
