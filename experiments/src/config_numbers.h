@@ -23,6 +23,19 @@ inline double number_in(const yaml::Node& block, const std::string& key, double 
   return v;
 }
 
+/// An optional whole number that must lie in [lo, hi]; `fallback` when absent. A number with a
+/// fraction is refused by the YAML reader ("expected an integer").
+inline int whole_number_in(const yaml::Node& block, const std::string& key, int lo, int hi,
+                           int fallback) {
+  const auto c = block.child(key);
+  if (!c) return fallback;
+  const int v = c->as<int>();
+  if (v < lo || v > hi) {
+    c->fail(key + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  }
+  return v;
+}
+
 /// An optional number that must be > lo (strictly).
 inline double number_above(const yaml::Node& block, const std::string& key, double lo,
                            double fallback) {

@@ -13,6 +13,7 @@ namespace cogmap::experiments {
 
 using detail::number_above;
 using detail::number_in;
+using detail::whole_number_in;
 using yaml::Node;
 
 mapper::MapperOptions parse_mapper_options(const Node& block) {
@@ -158,11 +159,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.max_room_travel_m = number_in(block, "max_room_travel_m", 0.0, 1e6, o.max_room_travel_m);
   o.localizer.odometry_prior = block.get_or<bool>("em_odometry_prior", o.localizer.odometry_prior);
   o.localizer.prior_shrinks = block.get_or<bool>("em_prior_shrinks", o.localizer.prior_shrinks);
-  if (const auto r = block.child("em_reference_rooms")) {
-    const int rooms = r->as<int>();  // a whole number: "expected an integer" otherwise
-    if (rooms < 1 || rooms > 1000) r->fail("em_reference_rooms must be in [1, 1000]");
-    o.localizer.reference_rooms = static_cast<std::size_t>(rooms);
-  }
+  o.localizer.reference_rooms = static_cast<std::size_t>(whole_number_in(
+      block, "em_reference_rooms", 1, 1000, static_cast<int>(o.localizer.reference_rooms)));
   if (const auto b = block.child("em_reference_bin_deg")) {  // 0: every direction on its own
     const double deg = number_in(block, "em_reference_bin_deg", 0.0, 10.0, 0.0);
     // Narrower bins than 0.01° (9 000 to the quarter circle) pool nothing a 10 cm grid's walls
@@ -186,11 +184,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       std::numbers::pi / 180.0;
   o.localizer.echo_refit.band_m =
       number_in(block, "em_echo_refit_band_m", 0.0, 1.0, o.localizer.echo_refit.band_m);
-  if (const auto n = block.child("em_echo_refit_min_echoes")) {
-    const int echoes = n->as<int>();
-    if (echoes < 2 || echoes > 100000) n->fail("em_echo_refit_min_echoes must be in [2, 100000]");
-    o.localizer.echo_refit.min_echoes = echoes;
-  }
+  o.localizer.echo_refit.min_echoes = whole_number_in(block, "em_echo_refit_min_echoes", 2, 100000,
+                                                      o.localizer.echo_refit.min_echoes);
   o.localizer.echo_refit.max_turn_rad =
       number_in(block, "em_echo_refit_max_turn_deg", 0.0, 45.0,
                 o.localizer.echo_refit.max_turn_rad * 180.0 / std::numbers::pi) *
@@ -223,20 +218,12 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   // Whole numbers ("expected an integer" otherwise): a window below the 30 matched echoes a
   // match needs could never measure, and every match redraws the whole memory (20 000 readings
   // are seven minutes of the ring).
-  if (const auto n = block.child("scan_match_min_window_echoes")) {
-    const int echoes = n->as<int>();
-    if (echoes < 30 || echoes > 100000) {
-      n->fail("scan_match_min_window_echoes must be in [30, 100000]");
-    }
-    o.scan_match.min_window_echoes = static_cast<std::size_t>(echoes);
-  }
-  if (const auto n = block.child("scan_match_memory_readings")) {
-    const int readings = n->as<int>();
-    if (readings < 100 || readings > 20000) {
-      n->fail("scan_match_memory_readings must be in [100, 20000]");
-    }
-    o.scan_match.memory_readings = static_cast<std::size_t>(readings);
-  }
+  o.scan_match.min_window_echoes =
+      static_cast<std::size_t>(whole_number_in(block, "scan_match_min_window_echoes", 30, 100000,
+                                               static_cast<int>(o.scan_match.min_window_echoes)));
+  o.scan_match.memory_readings =
+      static_cast<std::size_t>(whole_number_in(block, "scan_match_memory_readings", 100, 20000,
+                                               static_cast<int>(o.scan_match.memory_readings)));
   o.door_fix.enabled = block.get_or<bool>("door_fix", o.door_fix.enabled);
   o.door_fix.match_radius_m =
       number_in(block, "door_fix_radius_m", 0.05, 10.0, o.door_fix.match_radius_m);
