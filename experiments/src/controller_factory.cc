@@ -25,6 +25,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       }
       o.door.cross_side_walls.enabled = c.grazing_walls;
       o.plan_over_trail = c.plan_over_trail;
+      o.blocked_path_s = c.blocked_path_s;
       return mapper::nav::make_explorer(o);
     }
     case ControllerKind::kNone:

@@ -189,6 +189,21 @@ TEST(ExperimentConfig, PlanOverTrailIsOnForExploreAndOnlyThere) {
       << error_of(route, {"controller.plan_over_trail=false"});
 }
 
+TEST(ExperimentConfig, BlockedPathSecondsAreForExploreWithinTheirRange) {
+  const fs::path x =
+      write_temp("xblocked.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore}\n");
+  EXPECT_EQ(load_experiment(x, {}).controller.blocked_path_s, 10.0);
+  EXPECT_EQ(load_experiment(x, {"controller.blocked_path_s=0"}).controller.blocked_path_s, 0.0);
+  EXPECT_EQ(load_experiment(x, {"controller.blocked_path_s=2.5"}).controller.blocked_path_s, 2.5);
+  EXPECT_NE(error_of(x, {"controller.blocked_path_s=-1"}), "no error");
+  EXPECT_NE(error_of(x, {"controller.blocked_path_s=3601"}), "no error");
+  EXPECT_NE(error_of(x, {"controller.blocked_path_s=.nan"}), "no error");
+  const fs::path route = write_temp("xblocked_route.yaml", kGood);
+  EXPECT_NE(error_of(route, {"controller.blocked_path_s=5"}).find("only used by explore"),
+            std::string::npos)
+      << error_of(route, {"controller.blocked_path_s=5"});
+}
+
 TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
   std::string text = kGood;
   text.replace(text.find("  cell_scale_mm"), 15, "  cell_scale_nm");

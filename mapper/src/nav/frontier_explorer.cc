@@ -105,6 +105,12 @@ class FrontierExplorer final : public Controller {
     // (A goal planned through reopened cells is kept until it is reached or fails: its
     // frontier may be one only on the reopened copy.)
     if (goal_ && !goal_reopened_ && !map_.frontier(map_.cell_of(target_))) goal_.reset();
+    if (path_blocked_long_enough(here, now, robot)) {
+      // Not given up (no ban): the same frontier may have another way in, which a new plan,
+      // over the map as it is now, finds.
+      goal_.reset();
+      arrived_s_.reset();
+    }
     if (!goal_) {
       goal_reopened_ = false;
       auto plan =
@@ -133,6 +139,9 @@ class FrontierExplorer final : public Controller {
       target_ = plan->frontier;
       target_in_doorway_ = plan->frontier_in_doorway;
       best_m_ = std::numeric_limits<double>::infinity();
+      legs_.assign(1, here);
+      legs_.insert(legs_.end(), plan->waypoints.begin(), plan->waypoints.end());
+      blocked_since_s_.reset();
       follower_->set_waypoints(plan->waypoints);
     }
     const VelocityCommand cmd = follower_->step(input);
@@ -150,6 +159,23 @@ class FrontierExplorer final : public Controller {
   }
 
  private:
+  /// ExploreOptions::blocked_path_s: true once the rest of the planned path has crossed an
+  /// obstacle cell for that long. A path planned over cells the beams swept free runs into a
+  /// wall they had swept through, heard since from near; followed on, it ends only at the
+  /// give-up clock (give_up_s, 45 s). A doorway's jambs heard obliquely from afar paint its
+  /// middle for a moment and the beams through it from near clear it again: hence the wait.
+  /// Plans through reopened cells (the last look) are not checked: their cells are obstacles
+  /// on the map by definition.
+  bool path_blocked_long_enough(const Point2& here, double now, const RobotGeometry& robot) {
+    if (options_.blocked_path_s <= 0.0 || !goal_ || goal_reopened_ ||
+        !path_blocked(map_, legs_, follower_->trace().waypoint_index, here, 0.5 * robot.length_m)) {
+      blocked_since_s_.reset();
+      return false;
+    }
+    if (!blocked_since_s_) blocked_since_s_ = now;
+    return now - *blocked_since_s_ >= options_.blocked_path_s;
+  }
+
   /// The give-up clock restarts when the robot comes progress_m nearer its goal or the map
   /// gains progress_cells newly seen cells (travelling back through known rooms to a far
   /// frontier makes progress of the first kind, exploring of the second).
@@ -241,13 +267,15 @@ class FrontierExplorer final : public Controller {
   NavTrace trace_;
   bool finished_ = false;
   ExploreBudget budget_;
-  std::optional<Point2> goal_;        // where the robot drives to see...
-  Point2 target_{0.0, 0.0};           // ...this frontier cell,
-  bool target_in_doorway_ = false;    // which lies in a doorway (a look bans only this side)
-  bool goal_reopened_ = false;        // planned through cells the room grid reopened
-  int reopen_plans_ = 0;              // such plans made so far
-  std::unique_ptr<Controller> edge_;  // the start room's edge walk, once begun
-  bool edge_active_ = false;          // ...walking now (not between its doors' frontiers)
+  std::vector<Point2> legs_;               // the plan's start, then its waypoints
+  std::optional<double> blocked_since_s_;  // the rest of the path crosses an obstacle since
+  std::optional<Point2> goal_;             // where the robot drives to see...
+  Point2 target_{0.0, 0.0};                // ...this frontier cell,
+  bool target_in_doorway_ = false;         // which lies in a doorway (a look bans only this side)
+  bool goal_reopened_ = false;             // planned through cells the room grid reopened
+  int reopen_plans_ = 0;                   // such plans made so far
+  std::unique_ptr<Controller> edge_;       // the start room's edge walk, once begun
+  bool edge_active_ = false;               // ...walking now (not between its doors' frontiers)
   double edge_start_s_ = 0.0;
   std::size_t edge_passages_ = 0;  // doors it passed
   double progress_s_ = 0.0;        // when the give-up clock last restarted

@@ -303,4 +303,24 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   return plan;
 }
 
+bool path_blocked(const ExploreMap& map, std::span<const Point2> legs, std::size_t next,
+                  const Point2& robot, double skip_m) {
+  // Half-cell steps along each leg: the cells its line runs through (one it clips by less than
+  // a quarter cell at a corner may be passed over).
+  const double step_m = 0.5 * map.cell_m();
+  for (std::size_t k = next; k + 1 < legs.size(); ++k) {
+    const Point2 from = legs[k], to = legs[k + 1];
+    const double length_m = (to - from).norm();
+    if (!std::isfinite(length_m)) return false;
+    const int steps = static_cast<int>(std::ceil(length_m / step_m));
+    for (int i = 0; i <= steps; ++i) {
+      const Point2 p = steps == 0 ? from : from + (static_cast<double>(i) / steps) * (to - from);
+      if ((p - robot).norm() < skip_m) continue;
+      const Cell c = map.cell_of(p);
+      if (map.occupied(c) && !map.traversed(c)) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace cogmap::mapper::nav

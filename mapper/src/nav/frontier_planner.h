@@ -50,4 +50,12 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
                                              double banned_radius_m,
                                              const FrontierOptions& options);
 
+/// Whether the rest of a planned path crosses a cell `map` now shows an obstacle: `legs` is
+/// the plan's start followed by its waypoints, `next` the waypoint being approached (its leg
+/// begins at legs[next]). Cells the robot's centre has passed through are not obstacles (the
+/// planner's own rule for the way back), nor are cells within `skip_m` of `robot`, which are
+/// the body's surroundings that VFH and the door behaviour steer around.
+bool path_blocked(const ExploreMap& map, std::span<const Point2> legs, std::size_t next,
+                  const Point2& robot, double skip_m);
+
 }  // namespace cogmap::mapper::nav

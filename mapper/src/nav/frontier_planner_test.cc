@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -182,6 +183,62 @@ TEST(FrontierPlanner, LegsStayOnSeenFreeCellsAndAreBounded) {
               std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(straight / max_leg_m))));
     expect_walkable_legs(map, from, *plan, max_leg_m);
   }
+}
+
+// Two seen free rooms side by side, 4 m x 2 m each (cells x 0-20 and 22-42, y 0-10), the
+// column of cells between them (x 4.2 m) a wall heard from the west.
+ExploreMap wall_between_rooms() {
+  Scene scene;
+  scene.add_free(0, 0, 20, 10);
+  scene.add_free(22, 0, 42, 10);
+  const ExploreMap map = scene.build();
+  EXPECT_TRUE(map.occupied(map.cell_of(at({21, 5}))));
+  return map;
+}
+
+TEST(FrontierPlanner, APathThroughAWallHeardSinceIsBlocked) {
+  const ExploreMap map = wall_between_rooms();
+  const Point2 robot = at({2, 5});
+  // The first leg runs east along y = 1 m through the wall; the second north in the east room.
+  const std::vector<Point2> legs{robot, at({30, 5}), at({30, 9})};
+  EXPECT_TRUE(path_blocked(map, legs, 0, robot, 0.31));
+  // Approaching the second waypoint: only its leg is left, and it is clear.
+  EXPECT_FALSE(path_blocked(map, legs, 1, at({30, 5}), 0.31));
+  EXPECT_FALSE(path_blocked(map, legs, 2, at({30, 9}), 0.31));
+  // A path that stays in the west room is clear.
+  const std::vector<Point2> west{robot, at({18, 5}), at({18, 9})};
+  EXPECT_FALSE(path_blocked(map, west, 0, robot, 0.31));
+}
+
+TEST(FrontierPlanner, ABlockedPathIgnoresTheBodysSurroundingsAndTheTrail) {
+  ExploreMap map = wall_between_rooms();
+  // The robot stands 0.2 m before the wall's centre line: what lies within 0.31 m of it is
+  // left to VFH, and the leg is clear beyond.
+  const Point2 robot = at({20, 5});
+  const std::vector<Point2> legs{robot, at({30, 5})};
+  EXPECT_TRUE(path_blocked(map, legs, 0, robot, 0.0));
+  EXPECT_FALSE(path_blocked(map, legs, 0, robot, 0.31));
+  // From farther back the wall counts, unless the robot's centre has passed through its cell
+  // (the planner's way back over the trail).
+  const std::vector<Point2> from_afar{at({10, 5}), at({30, 5})};
+  EXPECT_TRUE(path_blocked(map, from_afar, 0, at({10, 5}), 0.31));
+  map.mark_traversed(at({21, 5}));
+  EXPECT_FALSE(path_blocked(map, from_afar, 0, at({10, 5}), 0.31));
+  // A leg along a line through the next cell of the wall is blocked again.
+  const std::vector<Point2> beside{at({10, 6}), at({30, 6})};
+  EXPECT_TRUE(path_blocked(map, beside, 0, at({10, 6}), 0.31));
+}
+
+TEST(FrontierPlanner, ABlockedPathCheckEndsOnDegenerateLegs) {
+  const ExploreMap map = wall_between_rooms();
+  const Point2 robot = at({2, 5});
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(path_blocked(map, std::vector<Point2>{}, 0, robot, 0.31));
+  EXPECT_FALSE(path_blocked(map, std::vector<Point2>{robot}, 0, robot, 0.31));
+  EXPECT_FALSE(path_blocked(map, std::vector<Point2>{robot, robot}, 0, robot, 0.31));
+  EXPECT_FALSE(path_blocked(map, std::vector<Point2>{robot, Point2(inf, 1.0)}, 0, robot, 0.31));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(path_blocked(map, std::vector<Point2>{robot, Point2(nan, 1.0)}, 0, robot, 0.31));
 }
 
 TEST(ExploreMapImage, ClassifiesEveryCellAsThePlannerSeesIt) {

@@ -64,6 +64,9 @@ struct ControllerConfig {
   /// `plan_over_trail` (explore only): with no frontier reachable, the frontier explorer plans
   /// once more through the cells its centre has passed (ExploreOptions::plan_over_trail, on).
   bool plan_over_trail = true;
+  /// `blocked_path_s` (explore only): the frontier explorer plans again once the rest of its
+  /// path has crossed an obstacle for this long (ExploreOptions::blocked_path_s; 0 = never).
+  double blocked_path_s = mapper::nav::ExploreOptions{}.blocked_path_s;
 };
 
 /// Bounds on what an experiment may ask for (docs/reliability.md "Limits"): beyond them a

@@ -179,6 +179,13 @@ struct ExploreOptions {
   double progress_m = 0.3;            ///< what counts as nearer
   int progress_cells = 10;            ///< ...or this many cells newly seen (0.4 m²)
   double ban_radius_m = 0.6;          ///< frontier cells this near a given-up goal are ignored
+  double blocked_path_s = 10.0;       ///< frontier explorer: the rest of the planned path has
+                                      ///< crossed a cell the map shows an obstacle for this
+                                      ///< long (a wall the beams had swept through, heard
+                                      ///< since): plan again, the goal not given up (0 = follow
+                                      ///< the path to the goal or to give_up_s). 10 s: measured
+                                      ///< on generated buildings (docs/algorithms.md, "A path
+                                      ///< run into a wall")
   double look_hold_s = 1.0;           ///< arrived: hold still this long (two cycles of the
                                       ///< sonar ring, fired every ~0.4 s) before the frontier,
                                       ///< if still there, is given up
