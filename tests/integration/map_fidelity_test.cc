@@ -131,7 +131,7 @@ INSTANTIATE_TEST_SUITE_P(
         // Aligned as a whole: 0.041, 0.042, 0.041, 0.041, 0.048 m.
         FidelityCase{
             "explore_nine_rooms", "explore_nine_rooms", {}, 0.209, 0.56, 0.51, 0.35, 2.1, 0.060},
-        // 2026-12-07: 0.212 m, 0.511 m, 0.539, 0.375, 5.85°; mean 18.86° -> 2.74° (seed 5 stops
+        // 2026-12-07: 0.212 m, 0.511 m, 0.539, 0.375, 5.85°; mean 20.43° -> 3.34° (seed 5 stops
         // after 5 of the 9 rooms: a door goal given up). 2026-12-06: 0.248 m, 0.543 m, 0.493,
         // 0.432, 11.31°; mean 7.33° -> 3.30° (without the matcher 0.278 m, 0.671 m, 0.496,
         // 0.473, 6.01°; mean 8.24° -> 2.28°).

@@ -106,20 +106,21 @@ class FrontierExplorer final : public Controller {
     // frontier may be one only on the reopened copy.)
     if (goal_ && !goal_reopened_ && !map_.frontier(map_.cell_of(target_))) goal_.reset();
     if (path_blocked_long_enough(here, now, robot)) {
-      // Not given up (no ban): the same frontier may have another way in, which a new plan,
-      // over the map as it is now, finds.
-      goal_.reset();
-      arrived_s_.reset();
+      // A new plan over the map as it is now, the goal not given up (no ban: the same
+      // frontier may have another way in). With none, the blocked path is still the best
+      // bet (the door behaviour may find the way through what the map shows shut), so it is
+      // followed on and checked again blocked_path_s later; ending the exploration here ended
+      // runs in their start room.
+      if (auto plan = plan_over_free_cells(input.pose)) {
+        arrived_s_.reset();
+        follow(*plan, here, now);
+      } else {
+        blocked_since_s_ = now;
+      }
     }
     if (!goal_) {
       goal_reopened_ = false;
-      auto plan =
-          plan_to_frontier(map_, input.pose, banned_, options_.ban_radius_m, options_.frontier);
-      if (!plan && options_.plan_over_trail) {
-        FrontierOptions over_trail = options_.frontier;
-        over_trail.trail_passable = true;
-        plan = plan_to_frontier(map_, input.pose, banned_, options_.ban_radius_m, over_trail);
-      }
+      auto plan = plan_over_free_cells(input.pose);
       if (!plan && map_.readings() >= ring) {
         plan = plan_through_reopened(input);
         goal_reopened_ = plan.has_value();
@@ -134,15 +135,7 @@ class FrontierExplorer final : public Controller {
         }
         return finish(true);
       }
-      progress_s_ = now;
-      goal_ = plan->goal;
-      target_ = plan->frontier;
-      target_in_doorway_ = plan->frontier_in_doorway;
-      best_m_ = std::numeric_limits<double>::infinity();
-      legs_.assign(1, here);
-      legs_.insert(legs_.end(), plan->waypoints.begin(), plan->waypoints.end());
-      blocked_since_s_.reset();
-      follower_->set_waypoints(plan->waypoints);
+      follow(*plan, here, now);
     }
     const VelocityCommand cmd = follower_->step(input);
     trace_ = follower_->trace();
@@ -159,6 +152,31 @@ class FrontierExplorer final : public Controller {
   }
 
  private:
+  /// The plan to the cheapest frontier over seen free cells, else over the trail as well
+  /// (ExploreOptions::plan_over_trail).
+  std::optional<FrontierPlan> plan_over_free_cells(const Pose2& pose) const {
+    auto plan = plan_to_frontier(map_, pose, banned_, options_.ban_radius_m, options_.frontier);
+    if (!plan && options_.plan_over_trail) {
+      FrontierOptions over_trail = options_.frontier;
+      over_trail.trail_passable = true;
+      plan = plan_to_frontier(map_, pose, banned_, options_.ban_radius_m, over_trail);
+    }
+    return plan;
+  }
+
+  /// Makes `plan` the goal and hands its waypoints to the route follower.
+  void follow(const FrontierPlan& plan, const Point2& here, double now) {
+    progress_s_ = now;
+    goal_ = plan.goal;
+    target_ = plan.frontier;
+    target_in_doorway_ = plan.frontier_in_doorway;
+    best_m_ = std::numeric_limits<double>::infinity();
+    legs_.assign(1, here);
+    legs_.insert(legs_.end(), plan.waypoints.begin(), plan.waypoints.end());
+    blocked_since_s_.reset();
+    follower_->set_waypoints(plan.waypoints);
+  }
+
   /// ExploreOptions::blocked_path_s: true once the rest of the planned path has crossed an
   /// obstacle cell for that long. A path planned over cells the beams swept free runs into a
   /// wall they had swept through, heard since from near; followed on, it ends only at the
