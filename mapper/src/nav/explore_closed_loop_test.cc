@@ -96,6 +96,22 @@ TEST(FrontierExplorerLoop, TheEdgeWalkFindsADoorwayPaintedShut) {
   EXPECT_GT(r.min_clearance_m, 0.4);
 }
 
+TEST(FrontierExplorerLoop, TheEdgeWalksEndHandsBackToTheFrontiers) {
+  // The doorway painted shut as above, and the walk's time up (25 s) while the robot stands in
+  // the doorway, before the walk counts it passed: the beams through it have opened the second
+  // room on the explore map by then, so the frontiers take over again. (Ending the exploration
+  // when the walk ended stopped this run at 71.7 s at x 5.18 m, the second room unexplored.)
+  ExploreOptions shut;
+  shut.map.hit_half_angle_deg = 20.0;
+  shut.start_room_edge_s = 25.0;
+  auto c = make_explorer(shut);
+  const LoopRun r = drive(*c, two_rooms(), {1.0, 2.0, 0.0}, 900.0);
+  EXPECT_GT(r.max_x_m, 8.0);  // 8.5 m measured
+  EXPECT_TRUE(r.complete);
+  EXPECT_LT(r.time_s, 138.0);  // 1.25x the 110.5 s measured
+  EXPECT_GT(r.min_clearance_m, 0.4);
+}
+
 TEST(FrontierExplorerLoop, ABudgetEndsTheExplorationUnfinished) {
   ExploreOptions o;
   o.time_budget_s = 20.0;

@@ -232,7 +232,7 @@ class FrontierExplorer final : public Controller {
   /// frontier (a gap between furniture), until its time is up. True when it walks on.
   bool walk_start_room_edge(double now) {
     if (edge_) {
-      if (now - edge_start_s_ > options_.start_room_edge_s) return false;
+      if (edge_over_ || now - edge_start_s_ > options_.start_room_edge_s) return false;
       edge_active_ = true;
       return true;
     }
@@ -248,7 +248,9 @@ class FrontierExplorer final : public Controller {
   }
 
   /// One cycle of the edge walk: its command, or nullopt when a door has just been passed (the
-  /// frontiers take over again). Round the room, or out of time, the exploration ends.
+  /// frontiers take over again) or the walk is over (round the room, or out of time): then
+  /// the frontiers are planned once more, since the walk's beams may have opened a doorway
+  /// the map had painted shut, and only with none reachable does the exploration end.
   std::optional<VelocityCommand> edge_step(const NavInput& input) {
     const VelocityCommand cmd = edge_->step(input);
     const NavTrace& walked = edge_->trace();
@@ -260,7 +262,9 @@ class FrontierExplorer final : public Controller {
     }
     if (edge_->done() || input.frame->time_s - edge_start_s_ > options_.start_room_edge_s) {
       edge_active_ = false;
-      return finish(true);
+      edge_over_ = true;
+      goal_.reset();
+      return std::nullopt;
     }
     trace_ = walked;
     trace_.exploration_complete = false;
@@ -294,6 +298,7 @@ class FrontierExplorer final : public Controller {
   int reopen_plans_ = 0;                   // such plans made so far
   std::unique_ptr<Controller> edge_;       // the start room's edge walk, once begun
   bool edge_active_ = false;               // ...walking now (not between its doors' frontiers)
+  bool edge_over_ = false;                 // ...round the room or out of time: never again
   double edge_start_s_ = 0.0;
   std::size_t edge_passages_ = 0;  // doors it passed
   double progress_s_ = 0.0;        // when the give-up clock last restarted

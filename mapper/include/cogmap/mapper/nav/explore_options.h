@@ -192,7 +192,8 @@ struct ExploreOptions {
   double start_room_edge_s = 150.0;   ///< frontier explorer: when no frontier is left and no
                                       ///< door has been passed yet (still in the start room,
                                       ///< its doorways painted shut), walk the room's edge as
-                                      ///< the edge explorer does, at most this long, before
+                                      ///< the edge explorer does, at most this long (or once
+                                      ///< round), then plan the frontiers once more before
                                       ///< stopping; a door passed on the way resumes the
                                       ///< frontiers (0 = stop at once). 150 s: one lap of a
                                       ///< 10 x 8 m room at the edge walk's ~0.21 m/s
