@@ -10,6 +10,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       o.waypoint_tolerance_m = c.waypoint_tolerance_m;
       if (c.door_search && !*c.door_search) o.door.search_per_waypoint = 0;
       o.door.cross_side_walls.enabled = c.grazing_walls;
+      if (c.arc_guard_s) o.safety.arc_guard_s = *c.arc_guard_s;
       return mapper::nav::make_route_follower(o, c.waypoints);
     }
     case ControllerKind::kExplore: {
@@ -26,6 +27,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       o.door.cross_side_walls.enabled = c.grazing_walls;
       o.plan_over_trail = c.plan_over_trail;
       o.blocked_path_s = c.blocked_path_s;
+      if (c.arc_guard_s) o.safety.arc_guard_s = *c.arc_guard_s;
       return mapper::nav::make_explorer(o);
     }
     case ControllerKind::kNone:

@@ -82,7 +82,7 @@ RobotSource parse_source(const Node& n) {
 ControllerConfig parse_controller(const Node& block) {
   block.expect_keys({"type", "speed_mps", "waypoints", "waypoint_tolerance_m", "pose", "strategy",
                      "time_budget_s", "distance_budget_m", "door_search", "grazing_walls",
-                     "plan_over_trail", "blocked_path_s"});
+                     "plan_over_trail", "blocked_path_s", "arc_guard_s"});
   ControllerConfig c;
   const Node type = block["type"];
   const std::string t = type.as<std::string>();
@@ -144,6 +144,8 @@ ControllerConfig parse_controller(const Node& block) {
   c.explore_distance_budget_m = number_in(block, "distance_budget_m", 0.0, 1e6, 0.0);
   // Beyond an hour a blocked path is never left before give_up_s anyway.
   c.blocked_path_s = number_in(block, "blocked_path_s", 0.0, 3600.0, c.blocked_path_s);
+  // Beyond 5 s (2.5 m at 0.5 m/s) every doorway's jambs lie on the arc ahead.
+  if (block.child("arc_guard_s")) c.arc_guard_s = number_in(block, "arc_guard_s", 0.0, 5.0, 0.0);
   if (c.type == ControllerKind::kRoute && c.waypoints.empty()) {
     block.fail("a route controller needs at least one waypoint in 'waypoints'");
   }

@@ -204,6 +204,20 @@ TEST(ExperimentConfig, BlockedPathSecondsAreForExploreWithinTheirRange) {
       << error_of(route, {"controller.blocked_path_s=5"});
 }
 
+TEST(ExperimentConfig, ArcGuardSecondsAreOptionalWithinTheirRange) {
+  const fs::path x =
+      write_temp("xarc.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore}\n");
+  EXPECT_FALSE(load_experiment(x, {}).controller.arc_guard_s.has_value());
+  EXPECT_EQ(load_experiment(x, {"controller.arc_guard_s=0"}).controller.arc_guard_s, 0.0);
+  EXPECT_EQ(load_experiment(x, {"controller.arc_guard_s=1.5"}).controller.arc_guard_s, 1.5);
+  EXPECT_NE(error_of(x, {"controller.arc_guard_s=-0.1"}), "no error");
+  EXPECT_NE(error_of(x, {"controller.arc_guard_s=5.5"}), "no error");
+  EXPECT_NE(error_of(x, {"controller.arc_guard_s=.inf"}), "no error");
+  // Routes take it too.
+  const fs::path route = write_temp("xarc_route.yaml", kGood);
+  EXPECT_EQ(load_experiment(route, {"controller.arc_guard_s=0.5"}).controller.arc_guard_s, 0.5);
+}
+
 TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
   std::string text = kGood;
   text.replace(text.find("  cell_scale_mm"), 15, "  cell_scale_nm");

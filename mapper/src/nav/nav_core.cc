@@ -166,8 +166,20 @@ VelocityCommand NavCore::spin_guarded(const VelocityCommand& cmd) const {
   return cmd;
 }
 
+VelocityCommand NavCore::arc_guarded(const VelocityCommand& cmd) const {
+  const SafetyOptions& s = options_.safety;
+  if (s.arc_guard_s <= 0.0 || std::abs(cmd.v_mps) <= s.spin_max_speed_mps ||
+      !arc_strikes(field_.points(), heading_rad_, cmd.v_mps, cmd.w_radps, robot_,
+                   s.spin_guard_margin_m, s.arc_guard_s)) {
+    return cmd;
+  }
+  // The turn alone, which the spin guard checks in turn (and moves away from the point first
+  // when the turn itself would strike it).
+  return {0.0, cmd.w_radps};
+}
+
 VelocityCommand NavCore::sent(const VelocityCommand& requested) {
-  const VelocityCommand cmd = spin_guarded(requested);
+  const VelocityCommand cmd = spin_guarded(arc_guarded(requested));
   moving_ = std::abs(cmd.v_mps) > kMotionEpsilon || std::abs(cmd.w_radps) > kMotionEpsilon;
   if (std::abs(cmd.v_mps) > kMotionEpsilon) last_forward_ = cmd.v_mps > 0.0;
   return cmd;

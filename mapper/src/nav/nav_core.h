@@ -79,6 +79,11 @@ class NavCore {
   /// from it along the axis, when that lane is clear; any other command is returned as is.
   VelocityCommand spin_guarded(const VelocityCommand& cmd) const;
 
+  /// Moving on an arc that would bring a sensed point inside the body within
+  /// SafetyOptions::arc_guard_s (arc_strikes): the turn alone, for spin_guarded to check; any
+  /// other command is returned as is.
+  VelocityCommand arc_guarded(const VelocityCommand& cmd) const;
+
   /// A zero command in mode `mode` (also clears the motion flag).
   VelocityCommand stop(NavMode mode);
 

@@ -1,5 +1,6 @@
 #include "nav/spin_guard.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -43,6 +44,49 @@ std::optional<Point2> spin_strike(const std::vector<ObstaclePoint>& obstacles, d
     }
   }
   return first;
+}
+
+bool arc_strikes(const std::vector<ObstaclePoint>& obstacles, double heading_rad, double v_mps,
+                 double w_radps, const RobotGeometry& robot, double margin_m, double horizon_s) {
+  if (!(horizon_s > 0.0) || !std::isfinite(v_mps) || !std::isfinite(w_radps)) return false;
+  const double hl = 0.5 * robot.length_m + margin_m;
+  const double hw = 0.5 * robot.width_m + margin_m;
+  const auto inside = [&](const Point2& p) {
+    return std::abs(p.x()) <= hl && std::abs(p.y()) <= hw;
+  };
+  const double travel_m = std::abs(v_mps) * horizon_s;
+  const double turn_rad = std::abs(w_radps) * horizon_s;
+  const double reach_m = std::hypot(hl, hw) + travel_m;
+  // The body's poses along the arc, in the frame it starts in; the same for every point.
+  constexpr double kStepM = 0.02, kStepRad = std::numbers::pi / 180.0;
+  const int steps = std::clamp(
+      static_cast<int>(std::ceil(std::max(travel_m / kStepM, turn_rad / kStepRad))), 1, 1000);
+  struct Placed {
+    double x, y, cos_t, sin_t;
+  };
+  std::vector<Placed> poses;
+  poses.reserve(static_cast<std::size_t>(steps));
+  for (int k = 1; k <= steps; ++k) {
+    const double t = horizon_s * k / steps;
+    const double th = w_radps * t;
+    // Straight, or the chord of a circle of radius v / w.
+    const bool straight = std::abs(w_radps) < 1e-9;
+    const double x = straight ? v_mps * t : v_mps / w_radps * std::sin(th);
+    const double y = straight ? 0.0 : v_mps / w_radps * (1.0 - std::cos(th));
+    poses.push_back({x, y, std::cos(th), std::sin(th)});
+  }
+  const double c = std::cos(heading_rad), s = std::sin(heading_rad);
+  for (const ObstaclePoint& o : obstacles) {
+    if (o.offset_m.norm() > reach_m) continue;
+    const Point2 p(c * o.offset_m.x() + s * o.offset_m.y(),
+                   -s * o.offset_m.x() + c * o.offset_m.y());
+    if (inside(p)) continue;
+    for (const Placed& q : poses) {
+      const double dx = p.x() - q.x, dy = p.y() - q.y;
+      if (inside(Point2(q.cos_t * dx + q.sin_t * dy, -q.sin_t * dx + q.cos_t * dy))) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace cogmap::mapper::nav

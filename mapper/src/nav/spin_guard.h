@@ -21,4 +21,12 @@ std::optional<Point2> spin_strike(const std::vector<ObstaclePoint>& obstacles, d
                                   int turn_sign, const RobotGeometry& robot, double margin_m,
                                   double sweep_rad);
 
+/// Driving on an arc swings the corners out too (a turn toward a point beside the front corner
+/// strikes it while the cone ahead sees nothing): true when driving (v_mps, w_radps) for
+/// horizon_s from heading_rad brings an obstacle point (offsets from the robot centre, world
+/// axes) inside the body outline grown by margin_m. Points already inside are skipped, as in
+/// spin_strike. The body is placed every 0.02 m of travel or 1° of turn along the arc.
+bool arc_strikes(const std::vector<ObstaclePoint>& obstacles, double heading_rad, double v_mps,
+                 double w_radps, const RobotGeometry& robot, double margin_m, double horizon_s);
+
 }  // namespace cogmap::mapper::nav

@@ -65,6 +65,44 @@ TEST(SpinStrike, SkipsPointsOutOfReachOrAlreadyInsideAndPicksTheFirstStruck) {
   }
 }
 
+TEST(ArcStrikes, APointAheadIsStruckOnceTheHorizonCoversTheGap) {
+  const RobotGeometry robot = p2at_geometry();
+  // 0.2 m beyond the grown front (0.313 + 0.04): 0.4 s at 0.5 m/s, whatever the heading.
+  for (const double heading : {0.0, 2.0}) {
+    SCOPED_TRACE(heading);
+    const std::vector<ObstaclePoint> ahead = {{to_world(Point2(0.553, 0.0), heading), 15.0f}};
+    EXPECT_TRUE(arc_strikes(ahead, heading, 0.5, 0.0, robot, 0.04, 0.45));
+    EXPECT_FALSE(arc_strikes(ahead, heading, 0.5, 0.0, robot, 0.04, 0.35));
+    // Backing away from it, or a zero horizon, strikes nothing.
+    EXPECT_FALSE(arc_strikes(ahead, heading, -0.5, 0.0, robot, 0.04, 2.0));
+    EXPECT_FALSE(arc_strikes(ahead, heading, 0.5, 0.0, robot, 0.04, 0.0));
+    // Behind, reversing: the mirror image.
+    const std::vector<ObstaclePoint> behind = {{to_world(Point2(-0.553, 0.0), heading), 15.0f}};
+    EXPECT_TRUE(arc_strikes(behind, heading, -0.5, 0.0, robot, 0.04, 0.45));
+    EXPECT_FALSE(arc_strikes(behind, heading, -0.5, 0.0, robot, 0.04, 0.35));
+  }
+}
+
+TEST(ArcStrikes, ATurnSwingsTheFrontCornerIntoAPointBesideIt) {
+  const RobotGeometry robot = p2at_geometry();
+  // 0.0075 m outside the grown left flank (0.2525 + 0.04), beside the front-left corner: driving
+  // straight past it never brings it inside; at 0.3 m/s turning left at 0.6 rad/s the corner
+  // reaches it after 0.33 s (the arc's radius is 0.5 m); turning right swings the corner away.
+  const std::vector<ObstaclePoint> beside = {{Point2(0.40, 0.30), 15.0f}};
+  EXPECT_FALSE(arc_strikes(beside, 0.0, 0.3, 0.0, robot, 0.04, 2.0));
+  EXPECT_TRUE(arc_strikes(beside, 0.0, 0.3, 0.6, robot, 0.04, 0.5));
+  EXPECT_FALSE(arc_strikes(beside, 0.0, 0.3, 0.6, robot, 0.04, 0.2));
+  EXPECT_FALSE(arc_strikes(beside, 0.0, 0.3, -0.6, robot, 0.04, 0.5));
+  // Already inside the grown outline (a contact or a smear the arc cannot avoid): skipped; far
+  // beyond the arc's reach: skipped.
+  const std::vector<ObstaclePoint> inside_and_far = {{Point2(0.30, 0.28), 15.0f},
+                                                     {Point2(3.0, 0.0), 15.0f}};
+  EXPECT_FALSE(arc_strikes(inside_and_far, 0.0, 0.3, 0.6, robot, 0.04, 0.5));
+  // Non-finite commands strike nothing (nothing is sent for them either).
+  EXPECT_FALSE(
+      arc_strikes(beside, 0.0, std::numeric_limits<double>::quiet_NaN(), 0.6, robot, 0.04, 0.5));
+}
+
 /// A core that has sensed one echo of the left transducer (90°, at x 0.147, y 0.136) 0.2 m
 /// away: a point beside the left flank, near the front-left corner.
 struct LeftEcho {
@@ -100,6 +138,31 @@ TEST(SpinGuard, BacksAwayBeforeATurnThatWouldStrikeAndTurnsTheOtherWayFreely) {
   const VelocityCommand blind = u.core.drive_direct(u.input, 120.0 * kDeg, speed, NavMode::kDirect);
   EXPECT_DOUBLE_EQ(blind.v_mps, 0.0);
   EXPECT_DOUBLE_EQ(blind.w_radps, u.core.max_turn_radps());
+}
+
+TEST(ArcGuard, AnArcTowardAPointBesideTheCornerBecomesTheTurnAloneUnderTheSpinGuard) {
+  // 30° left: the steering asks for a forward arc to the left, which swings the front-left
+  // corner into the echo beside it; the guard drops the forward speed, and the turn alone
+  // strikes it too, so the spin guard backs away first. 30° right: the corner swings away.
+  CoreOptions on;
+  on.safety.arc_guard_s = 0.5;
+  LeftEcho s{on};
+  const double speed = s.core.speed_mps();
+  const VelocityCommand left = s.core.drive_direct(s.input, 30.0 * kDeg, speed, NavMode::kDirect);
+  EXPECT_DOUBLE_EQ(left.v_mps, -on.safety.spin_escape_mps);
+  EXPECT_DOUBLE_EQ(left.w_radps, 0.0);
+  CoreOptions off;
+  off.safety.arc_guard_s = 0.0;
+  LeftEcho u{off};
+  const VelocityCommand blind = u.core.drive_direct(u.input, 30.0 * kDeg, speed, NavMode::kDirect);
+  EXPECT_GT(blind.v_mps, 0.1);
+  EXPECT_GT(blind.w_radps, 0.5);
+  const VelocityCommand right = s.core.drive_direct(s.input, -30.0 * kDeg, speed, NavMode::kDirect);
+  const VelocityCommand right_blind =
+      u.core.drive_direct(u.input, -30.0 * kDeg, speed, NavMode::kDirect);
+  EXPECT_GT(right.v_mps, 0.1);
+  EXPECT_DOUBLE_EQ(right.v_mps, right_blind.v_mps);
+  EXPECT_DOUBLE_EQ(right.w_radps, right_blind.w_radps);
 }
 
 /// The left echo asks for a move back (as above) while a rear transducer hears something

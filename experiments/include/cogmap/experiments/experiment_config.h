@@ -67,6 +67,10 @@ struct ControllerConfig {
   /// `blocked_path_s` (explore only): the frontier explorer plans again once the rest of its
   /// path has crossed an obstacle for this long (ExploreOptions::blocked_path_s; 0 = never).
   double blocked_path_s = mapper::nav::ExploreOptions{}.blocked_path_s;
+  /// `arc_guard_s` (route and explore): how far ahead in time a move on an arc is checked
+  /// against the sensed points (SafetyOptions::arc_guard_s; 0 = off); unset = the
+  /// controller's default (off for route, 0.5 s for explore; docs/algorithms.md).
+  std::optional<double> arc_guard_s;
 };
 
 /// Bounds on what an experiment may ask for (docs/reliability.md "Limits"): beyond them a
