@@ -59,8 +59,9 @@ bool arc_strikes(const std::vector<ObstaclePoint>& obstacles, double heading_rad
   const double reach_m = std::hypot(hl, hw) + travel_m;
   // The body's poses along the arc, in the frame it starts in; the same for every point.
   constexpr double kStepM = 0.02, kStepRad = std::numbers::pi / 180.0;
-  const int steps = std::clamp(
-      static_cast<int>(std::ceil(std::max(travel_m / kStepM, turn_rad / kStepRad))), 1, 1000);
+  // Clamped before the conversion: a finite but huge command must not overflow the int.
+  const int steps = static_cast<int>(
+      std::clamp(std::ceil(std::max(travel_m / kStepM, turn_rad / kStepRad)), 1.0, 1000.0));
   struct Placed {
     double x, y, cos_t, sin_t;
   };
