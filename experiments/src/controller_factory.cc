@@ -26,6 +26,7 @@ std::unique_ptr<mapper::nav::Controller> make_controller(const ControllerConfig&
       }
       o.door.cross_side_walls.enabled = c.grazing_walls;
       o.plan_over_trail = c.plan_over_trail;
+      o.progress_along_path = c.progress_along_path;
       o.blocked_path_s = c.blocked_path_s;
       if (c.arc_guard_s) o.safety.arc_guard_s = *c.arc_guard_s;
       return mapper::nav::make_explorer(o);

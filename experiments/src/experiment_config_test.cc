@@ -189,6 +189,19 @@ TEST(ExperimentConfig, PlanOverTrailIsOnForExploreAndOnlyThere) {
       << error_of(route, {"controller.plan_over_trail=false"});
 }
 
+TEST(ExperimentConfig, ProgressAlongThePathIsOffByDefaultAndForExploreOnly) {
+  const fs::path x =
+      write_temp("xalong.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore}\n");
+  EXPECT_FALSE(load_experiment(x, {}).controller.progress_along_path);
+  EXPECT_TRUE(
+      load_experiment(x, {"controller.progress_along_path=true"}).controller.progress_along_path);
+  EXPECT_NE(error_of(x, {"controller.progress_along_path=2"}), "no error");
+  const fs::path route = write_temp("xalong_route.yaml", kGood);
+  EXPECT_NE(error_of(route, {"controller.progress_along_path=true"}).find("only used by explore"),
+            std::string::npos)
+      << error_of(route, {"controller.progress_along_path=true"});
+}
+
 TEST(ExperimentConfig, BlockedPathSecondsAreForExploreWithinTheirRange) {
   const fs::path x =
       write_temp("xblocked.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore}\n");

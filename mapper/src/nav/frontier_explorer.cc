@@ -196,7 +196,9 @@ class FrontierExplorer final : public Controller {
 
   /// The give-up clock restarts when the robot comes progress_m nearer its goal or the map
   /// gains progress_cells newly seen cells (travelling back through known rooms to a far
-  /// frontier makes progress of the first kind, exploring of the second).
+  /// frontier makes progress of the first kind, exploring of the second). Nearer along the
+  /// planned path (ExploreOptions::progress_along_path): a way round a wall or through the
+  /// rooms between first leads away from the goal as the crow flies.
   void track_progress(const Point2& here, double now) {
     const std::size_t seen = map_.seen_count();
     if (seen >= seen_at_progress_ + static_cast<std::size_t>(options_.progress_cells)) {
@@ -204,7 +206,9 @@ class FrontierExplorer final : public Controller {
       progress_s_ = now;
     }
     if (goal_) {
-      const double d = (*goal_ - here).norm();
+      const double d = options_.progress_along_path
+                           ? remaining_path_m(legs_, follower_->trace().waypoint_index, here)
+                           : (*goal_ - here).norm();
       if (d < best_m_ - options_.progress_m) {
         best_m_ = d;
         progress_s_ = now;

@@ -303,6 +303,14 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
   return plan;
 }
 
+double remaining_path_m(std::span<const Point2> legs, std::size_t next, const Point2& robot) {
+  if (legs.empty()) return 0.0;
+  const std::size_t ahead = std::min(next + 1, legs.size() - 1);
+  double left_m = (legs[ahead] - robot).norm();
+  for (std::size_t k = ahead; k + 1 < legs.size(); ++k) left_m += (legs[k + 1] - legs[k]).norm();
+  return left_m;
+}
+
 bool path_blocked(const ExploreMap& map, std::span<const Point2> legs, std::size_t next,
                   const Point2& robot, double skip_m) {
   // Half-cell steps along each leg: the cells its line runs through (one it clips by less than

@@ -58,4 +58,9 @@ std::optional<FrontierPlan> plan_to_frontier(const ExploreMap& map, const Pose2&
 bool path_blocked(const ExploreMap& map, std::span<const Point2> legs, std::size_t next,
                   const Point2& robot, double skip_m);
 
+/// What is left of a planned path, metres: from `robot` to the waypoint being approached
+/// (`legs` and `next` as for path_blocked: legs[next + 1]), then leg by leg to the last point.
+/// A `next` past the last waypoint leaves the distance to the last point; no legs, 0.
+double remaining_path_m(std::span<const Point2> legs, std::size_t next, const Point2& robot);
+
 }  // namespace cogmap::mapper::nav

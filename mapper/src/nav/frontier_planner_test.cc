@@ -241,6 +241,25 @@ TEST(FrontierPlanner, ABlockedPathCheckEndsOnDegenerateLegs) {
   EXPECT_FALSE(path_blocked(map, std::vector<Point2>{robot, Point2(nan, 1.0)}, 0, robot, 0.31));
 }
 
+TEST(FrontierPlanner, WhatIsLeftOfAPathIsMeasuredAlongItsLegs) {
+  // A way round a wall: 4 m south, 6 m east, 4 m north to a goal 6 m east of the start.
+  const std::vector<Point2> legs{{0.0, 0.0}, {0.0, -4.0}, {6.0, -4.0}, {6.0, 0.0}};
+  EXPECT_DOUBLE_EQ(remaining_path_m(legs, 0, {0.0, 0.0}), 14.0);
+  // 3 m down the first leg the robot is 3 m farther from the goal as the crow flies
+  // (hypot(6, 3) = 6.71 m against 6 m at the start) and 3 m nearer along the path.
+  EXPECT_DOUBLE_EQ(remaining_path_m(legs, 0, {0.0, -3.0}), 11.0);
+  // On the second leg: to its end (5 m), then the last leg (4 m).
+  EXPECT_DOUBLE_EQ(remaining_path_m(legs, 1, {1.0, -4.0}), 9.0);
+  // Off the line (0.3 m north of the second leg): straight to the waypoint ahead.
+  EXPECT_DOUBLE_EQ(remaining_path_m(legs, 1, {2.0, -3.7}), std::hypot(4.0, 0.3) + 4.0);
+  // Approaching the last point, and past the last waypoint: the distance to the last point.
+  EXPECT_DOUBLE_EQ(remaining_path_m(legs, 2, {6.0, -1.0}), 1.0);
+  EXPECT_DOUBLE_EQ(remaining_path_m(legs, 7, {6.0, 3.0}), 3.0);
+  // No legs: nothing left; the start alone: the distance back to it.
+  EXPECT_DOUBLE_EQ(remaining_path_m(std::vector<Point2>{}, 0, {1.0, 1.0}), 0.0);
+  EXPECT_DOUBLE_EQ(remaining_path_m(std::vector<Point2>{{0.0, 0.0}}, 0, {3.0, 4.0}), 5.0);
+}
+
 TEST(ExploreMapImage, ClassifiesEveryCellAsThePlannerSeesIt) {
   // A 5 x 5 free room walled round, with one wall cell left unseen: its inner neighbour is the
   // only frontier.

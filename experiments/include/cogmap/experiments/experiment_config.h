@@ -64,6 +64,9 @@ struct ControllerConfig {
   /// `plan_over_trail` (explore only): with no frontier reachable, the frontier explorer plans
   /// once more through the cells its centre has passed (ExploreOptions::plan_over_trail, on).
   bool plan_over_trail = true;
+  /// `progress_along_path` (explore only): the give-up clock counts progress along what is
+  /// left of the planned path, not as the crow flies (ExploreOptions::progress_along_path, off).
+  bool progress_along_path = mapper::nav::ExploreOptions{}.progress_along_path;
   /// `blocked_path_s` (explore only): the frontier explorer plans again once the rest of its
   /// path has crossed an obstacle for this long (ExploreOptions::blocked_path_s; 0 = never).
   double blocked_path_s = mapper::nav::ExploreOptions{}.blocked_path_s;

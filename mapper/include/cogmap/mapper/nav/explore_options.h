@@ -208,6 +208,13 @@ struct ExploreOptions {
                                       ///< frontiers (0 = stop at once). 150 s: one lap of a
                                       ///< 10 x 8 m room at the edge walk's ~0.21 m/s
                                       ///< (docs/algorithms.md, "The start room's edge walk")
+  /// The give-up clock's progress_m nearer along what is left of the planned path (on) instead
+  /// of as the crow flies (off): a goal whose way first leads away from it, round a wall or
+  /// back through the rooms between, is then not given up while the robot is on its way. Off
+  /// by default: on 344 generated and 60 shipped explorations it entered 6 more rooms of 2 423
+  /// and changed the contacts by +2, within the spread of any drive change (docs/algorithms.md,
+  /// "The give-up clock along the path").
+  bool progress_along_path = false;
   /// When no frontier is reachable, plan once more with the cells the robot's centre passed
   /// through passable (FrontierOptions::trail_passable) before the other last resorts: a
   /// doorway walked through is a way back even after its jambs, heard obliquely from the rooms
