@@ -177,16 +177,20 @@ TEST(ExperimentConfig, GrazingWallsAreOffUnlessAskedFor) {
   EXPECT_NE(error_of(p, {"controller.grazing_walls=7"}), "no error");
 }
 
+// A route experiment refuses an explore-only controller key, naming it as such.
+void expect_only_for_explore(const std::string& file_name, const std::string& setting) {
+  const fs::path route = write_temp(file_name, kGood);
+  const std::string error = error_of(route, {setting});
+  EXPECT_NE(error.find("only used by explore"), std::string::npos) << error;
+}
+
 TEST(ExperimentConfig, PlanOverTrailIsOnForExploreAndOnlyThere) {
   const fs::path x =
       write_temp("xtrail.yaml", "name: r\nworld: w.yaml\ncontroller: {type: explore}\n");
   EXPECT_TRUE(load_experiment(x, {}).controller.plan_over_trail);
   EXPECT_FALSE(load_experiment(x, {"controller.plan_over_trail=false"}).controller.plan_over_trail);
   EXPECT_NE(error_of(x, {"controller.plan_over_trail=maybe"}), "no error");
-  const fs::path route = write_temp("xtrail_route.yaml", kGood);
-  EXPECT_NE(error_of(route, {"controller.plan_over_trail=false"}).find("only used by explore"),
-            std::string::npos)
-      << error_of(route, {"controller.plan_over_trail=false"});
+  expect_only_for_explore("xtrail_route.yaml", "controller.plan_over_trail=false");
 }
 
 TEST(ExperimentConfig, ProgressAlongThePathIsOffByDefaultAndForExploreOnly) {
@@ -196,10 +200,7 @@ TEST(ExperimentConfig, ProgressAlongThePathIsOffByDefaultAndForExploreOnly) {
   EXPECT_TRUE(
       load_experiment(x, {"controller.progress_along_path=true"}).controller.progress_along_path);
   EXPECT_NE(error_of(x, {"controller.progress_along_path=2"}), "no error");
-  const fs::path route = write_temp("xalong_route.yaml", kGood);
-  EXPECT_NE(error_of(route, {"controller.progress_along_path=true"}).find("only used by explore"),
-            std::string::npos)
-      << error_of(route, {"controller.progress_along_path=true"});
+  expect_only_for_explore("xalong_route.yaml", "controller.progress_along_path=true");
 }
 
 TEST(ExperimentConfig, BlockedPathSecondsAreForExploreWithinTheirRange) {
@@ -211,10 +212,7 @@ TEST(ExperimentConfig, BlockedPathSecondsAreForExploreWithinTheirRange) {
   EXPECT_NE(error_of(x, {"controller.blocked_path_s=-1"}), "no error");
   EXPECT_NE(error_of(x, {"controller.blocked_path_s=3601"}), "no error");
   EXPECT_NE(error_of(x, {"controller.blocked_path_s=.nan"}), "no error");
-  const fs::path route = write_temp("xblocked_route.yaml", kGood);
-  EXPECT_NE(error_of(route, {"controller.blocked_path_s=5"}).find("only used by explore"),
-            std::string::npos)
-      << error_of(route, {"controller.blocked_path_s=5"});
+  expect_only_for_explore("xblocked_route.yaml", "controller.blocked_path_s=5");
 }
 
 TEST(ExperimentConfig, ArcGuardSecondsAreOptionalWithinTheirRange) {
