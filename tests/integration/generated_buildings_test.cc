@@ -44,6 +44,9 @@ struct BuildingCase {
   /// 263.2 of 720), so a route that circles for minutes before it completes fails, not only one
   /// that runs to the limit.
   double max_sim_time_s;
+  /// The fewest ASRs a completed seed may map, where the doorway detector's cuts of a corridor
+  /// vary from seed to seed (the offices are entered whatever it cuts); -1: exactly `asrs`.
+  int fewest_asrs = -1;
 };
 
 void PrintTo(const BuildingCase& c, std::ostream* os) { *os << c.name; }
@@ -66,12 +69,9 @@ TEST_P(GeneratedBuilding, CompletesTheRouteByTheEstimateWithoutContact) {
     EXPECT_LE(nav["waypoints_skipped"].get<int>(), done ? 0 : 1);
     EXPECT_EQ(nav["contacts"].get<int>(), 0);
     // A route given up at a waypoint may miss that room.
-    if (done) {
-      EXPECT_EQ(m["asr_count"].get<int>(), c.asrs);
-    } else {
-      EXPECT_GE(m["asr_count"].get<int>(), c.asrs - 1);
-      EXPECT_LE(m["asr_count"].get<int>(), c.asrs);
-    }
+    const int fewest = c.fewest_asrs < 0 ? c.asrs : c.fewest_asrs;
+    EXPECT_GE(m["asr_count"].get<int>(), done ? fewest : fewest - 1);
+    EXPECT_LE(m["asr_count"].get<int>(), c.asrs);
     EXPECT_LT(m["timing"]["sim_time_s"].get<double>(), c.max_sim_time_s);
     EXPECT_LE(m["map"]["wall_error_median_m"].get<double>(), c.max_median_wall_error_m);
   }
@@ -95,7 +95,15 @@ INSTANTIATE_TEST_SUITE_P(
         // `give_up_s` 40 s, 5 with 60 s (docs/algorithms.md, "A minute per waypoint"). Measured
         // 2026-12-05 (release build, seeds 1-5): 8 ASRs each, median wall error 0.134, 0.155,
         // 0.055, 0.171, 0.112 m.
-        BuildingCase{"block_4x2_s13", 8, 5, 0.214, 329.0}),
+        BuildingCase{"block_4x2_s13", 8, 5, 0.214, 329.0},
+        // An L of two 2.6 m corridors, 3 offices south of the first leg and 2 east of the
+        // second, rotated 200° (`gen-building lcorridor`, 2026-12-07). Measured (RelWithDebInfo,
+        // seeds 1-5): completed 5, ASRs 11, 11, 11, 11, 10 (seed 5's doorway detector leaves one
+        // corridor piece uncut), 310.4, 221.2, 273.8, 270.1, 283.1 s, median wall error 0.514,
+        // 0.054, 0.108, 0.075, 0.409 m: seeds 1 and 5 draw the map turned 5.1° and 4.5° as a
+        // whole (0.057 and 0.046 m once turned back), the rotation of docs/results.md "Kinds the
+        // random sets never draw" and issue 10.
+        BuildingCase{"lcorridor_5_w2_6_s72", 11, 5, 0.643, 388.0, 10}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace
