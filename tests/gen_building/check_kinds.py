@@ -16,12 +16,14 @@
    command twice makes the same files (every draw from --seed).
 Prints what failed and exits 1, or exits 0.
 """
-import json
 import math
 import os
 import re
 import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree from a test run
+from generated_files import duration_of, read_world, waypoints_of  # noqa: E402
 
 GEN, COGMAP, WORK = sys.argv[1:4]
 WALL_M = 0.12
@@ -45,11 +47,6 @@ def read(path):
         return f.read()
 
 
-def polylines(text):
-    return [json.loads(line.strip()[2:]) for line in text.splitlines()
-            if line.startswith("    - [[")]
-
-
 def items(text):
     """(kind, centre, size or radius) of each obstacle line the generator writes."""
     out = []
@@ -63,11 +60,6 @@ def items(text):
             out.append(("box", (float(m[1]), float(m[2])), (float(m[3]), float(m[4]),
                                                             float(m[5]))))
     return out
-
-
-def field(text, key):
-    m = re.search(rf"^\s*{key}: (.*)$", text, re.M)
-    return m[1] if m else None
 
 
 def world_check(path, what):
@@ -96,7 +88,7 @@ for args, (w_lo, w_hi), (d_lo, d_hi) in (("lab --seed 1", (8, 14), (5, 8)),
         continue
     path = os.path.join(out, f"{name}.world.yaml")
     text = read(path)
-    walls = polylines(text)
+    walls = read_world(path)["polylines"]
     check(len(walls) == 1 and len(walls[0]) == 5, f"{name}: walls {walls}")
     W, D = walls[0][2]
     check(w_lo <= W <= w_hi and d_lo <= D <= d_hi and W >= D, f"{name}: {W} x {D} m")
@@ -116,11 +108,11 @@ for args, (w_lo, w_hi), (d_lo, d_hi) in (("lab --seed 1", (8, 14), (5, 8)),
         check(reach_hi <= lo or reach_lo >= hi, f"{name}: an item {reach_lo:.2f}-{reach_hi:.2f}"
               f" reaches into the aisle {lo:.2f}-{hi:.2f}")
     check(desks >= 2 * int(W / 3.5), f"{name}: {desks} desks along {W} m walls")
-    route = json.loads(field(read(os.path.join(out, f"{name}.route.yaml")), "waypoints"))
+    route = waypoints_of(os.path.join(out, f"{name}.route.yaml"))
     check(len(route) == 2 and all(abs(y - D / 2) < 1e-3 and 0 < x < W for x, y in route),
           f"{name}: route {route}")
     for kind in ("route", "explore"):
-        got = float(field(read(os.path.join(out, f"{name}.{kind}.yaml")), "duration_s"))
+        got = duration_of(os.path.join(out, f"{name}.{kind}.yaml"))
         check(got == math.ceil(90 * W * D / 25), f"{name}: {kind} duration_s {got}")
     world_check(path, name)
 
@@ -135,16 +127,18 @@ for args, offices, width, (size_lo, size_hi) in cases:
     if name is None:
         continue
     path = os.path.join(out, f"{name}.world.yaml")
-    walls = polylines(read(path))
+    walls = read_world(path)["polylines"]
     outline = walls[0]
     check(len(outline) == 11, f"{args}: outline {outline}")
-    (_, south), (a, _) = outline[0], outline[1]
-    east, wc = outline[4]  # (E, Wc): the second leg's east wall and the corridor's width
-    check(abs(wc - width) < 1e-6 and abs(east - a - width) < 1e-6,
-          f"{args}: legs {wc} and {east - a} m wide, want {width}")
+    # (0, -d1), (A, -d1), ...: the first leg's offices end at x = A; (E, Wc): the second leg's
+    # east wall and the corridor's width.
+    (_, south), (offices_end, _) = outline[0], outline[1]
+    east, wc = outline[4]
+    check(abs(wc - width) < 1e-6 and abs(east - offices_end - width) < 1e-6,
+          f"{args}: legs {wc} and {east - offices_end} m wide, want {width}")
     n1, n2 = math.ceil(offices / 2), offices - math.ceil(offices / 2)
     doors = []
-    for y_wall, vertical in ((0.0, False), (east, True)):
+    for vertical in (False, True):
         pieces = sorted(tuple(sorted(p)) for p in walls[1:]
                         if (vertical and p[0][0] == p[1][0] == east) or
                         (not vertical and p[0][1] == p[1][1] == 0.0))
@@ -154,14 +148,14 @@ for args, offices, width, (size_lo, size_hi) in cases:
     check(len(doors) == offices, f"{args}: {len(doors)} gaps in the corridor walls for {offices}"
           " offices")
     check(all(0.9 - 1e-6 <= w <= 1.2 + 1e-6 for w in widths), f"{args}: door widths {widths}")
-    route = json.loads(field(read(os.path.join(out, f"{name}.route.yaml")), "waypoints"))
+    route = waypoints_of(os.path.join(out, f"{name}.route.yaml"))
     check(all(inside_polygon(p, outline) for p in route), f"{args}: a route point outside the L")
     # In the corridor the route keeps to the legs' midlines (or a door in their walls).
     for x, y in route:
-        if 0 < y < wc and x < a:
+        if 0 < y < wc and x < offices_end:
             check(abs(y - wc / 2) < 1e-3, f"{args}: ({x}, {y}) off the first leg's midline")
-        elif y > wc and a < x < east:
-            check(abs(x - (a + wc / 2)) < 1e-3, f"{args}: ({x}, {y}) off the second leg's midline")
+        elif y > wc and offices_end < x < east:
+            check(abs(x - (offices_end + wc / 2)) < 1e-3, f"{args}: ({x}, {y}) off the second leg's midline")
     # Office centres: the route's points south of the first leg and east of the second.
     south_rooms = [p for p in route if p[1] < -0.5]
     east_rooms = [p for p in route if p[0] > east + 0.5]
@@ -174,7 +168,7 @@ for args, offices, width, (size_lo, size_hi) in cases:
     # Duration: offices' widths from the partitions and the outline.
     xs = sorted({round(p[0][0], 3) for p in walls[1:] if p[0][0] == p[1][0] and p[0][1] < 0})
     ys = sorted({round(p[0][1], 3) for p in walls[1:] if p[0][1] == p[1][1] and p[0][0] >= east})
-    south_w = [b - a for a, b in zip([0.0] + xs, xs + [a])]
+    south_w = [b - a for a, b in zip([0.0] + xs, xs + [offices_end])]
     east_h = [b - a for a, b in zip([wc] + ys, ys + [outline[6][1]])]
     areas = [w * depth_s for w in south_w] + [h * depth_e for h in east_h]
     check(len(areas) == offices, f"{args}: {len(areas)} offices from the partitions")
@@ -182,7 +176,7 @@ for args, offices, width, (size_lo, size_hi) in cases:
           f"{args}: office sizes {south_w} {east_h}")
     want = math.ceil(90 * (sum(max(1.0, v / 25) for v in areas) + 1))
     for kind in ("route", "explore"):
-        got = float(field(read(os.path.join(out, f"{name}.{kind}.yaml")), "duration_s"))
+        got = duration_of(os.path.join(out, f"{name}.{kind}.yaml"))
         check(got == want, f"{args}: {kind} duration_s {got}, want {want}")
     world_check(path, args)
 

@@ -16,13 +16,15 @@
 Prints what failed and exits 1, or exits 0.
 """
 import glob
-import json
 import math
 import os
 import re
 import shlex
 import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree from a test run
+from generated_files import duration_of, read_world, waypoints_of  # noqa: E402
 
 GEN, COGMAP, GENERATED, WORK = sys.argv[1:5]
 failures = []
@@ -58,27 +60,6 @@ for world in sorted(glob.glob(os.path.join(GENERATED, "*.world.yaml"))):
             check(a.readlines()[1:] == b.readlines()[1:], f"{old} is not made the same any more")
 
 
-def read_world(path):
-    """The generator's own world format, read without a YAML library: its polylines (one JSON
-    list a line) and its description."""
-    world = {"polylines": [], "description": ""}
-    with open(path) as f:
-        for line in f:
-            if line.startswith("    - [["):
-                world["polylines"].append(json.loads(line.strip()[2:]))
-            elif line.startswith("description: "):
-                world["description"] = line[len("description: "):].strip()
-    return world
-
-
-def route_of(path):
-    with open(path) as f:
-        for line in f:
-            if line.startswith("  waypoints: "):
-                return json.loads(line[len("  waypoints: "):])
-    return []
-
-
 def lines_of(world):
     """x of the vertical and y of the horizontal wall lines, outline included."""
     xs, ys = set(), set()
@@ -89,14 +70,6 @@ def lines_of(world):
             if abs(y1 - y2) < 1e-9:
                 ys.add(round(y1, 3))
     return sorted(xs), sorted(ys)
-
-
-def duration_of(path):
-    with open(path) as f:
-        for line in f:
-            if line.startswith("duration_s: "):
-                return float(line[len("duration_s: "):])
-    return None
 
 
 def within(values, lo, hi, what):
@@ -140,7 +113,7 @@ for args, lo, hi in cases:
         check(got == want, f"{args}: {kind} duration_s {got}, want {want} (areas {areas})")
     check(len(set(widths + depths)) > 2, f"{args}: the sizes do not vary: {widths} {depths}")
     check(f"{lo:g}-{hi:g} m" in world["description"], f"{args}: {world['description']!r}")
-    route = route_of(os.path.join(out, f"{name}.route.yaml"))
+    route = waypoints_of(os.path.join(out, f"{name}.route.yaml"))
     check(len(route) > 4, f"{args}: no route")
     inside = all(xs[0] < x < xs[-1] and ys[0] < y < ys[-1] for x, y in route)
     check(inside, f"{args}: a route point outside the building")
