@@ -154,6 +154,7 @@ HeadingBreakdown heading_breakdown(TrajectoryView rows, std::span<const RoomSpan
   if (entry.empty()) return h;
   h.entry_error_deg_mean_abs = mean(entry);
   h.exit_error_deg_mean_abs = mean(exit);
+  h.exit_error_deg_max_abs = *std::max_element(exit.begin(), exit.end());
   h.within_room_drift_deg_mean_abs = mean(drift);
   h.within_room_drift_deg_max_abs = *std::max_element(drift.begin(), drift.end());
   return h;

@@ -175,6 +175,7 @@ TEST(ErrorBreakdown, HeadingAtEntryAndExitOfEachRoom) {
   EXPECT_EQ(h.rooms, 2u);
   EXPECT_NEAR(*h.entry_error_deg_mean_abs, (3.0 + 3.0) / 2.0, 1e-9);
   EXPECT_NEAR(*h.exit_error_deg_mean_abs, (2.0 + 4.0) / 2.0, 1e-9);
+  EXPECT_NEAR(*h.exit_error_deg_max_abs, 4.0, 1e-9);  // room B as it was left
   // Drifts: A 2 − (−3) = 5°; B 4 − (−3) = 7°.
   EXPECT_NEAR(*h.within_room_drift_deg_mean_abs, (5.0 + 7.0) / 2.0, 1e-9);
   EXPECT_NEAR(*h.within_room_drift_deg_max_abs, 7.0, 1e-9);
@@ -207,6 +208,7 @@ TEST(ErrorBreakdown, JsonBlockOnlyWithTruth) {
   b.lines = {0.04, 0.125, 80};
   b.heading.rooms = 3;
   b.heading.within_room_drift_deg_max_abs = 1.5;
+  b.heading.exit_error_deg_max_abs = 14.5;
   m.error_breakdown = b;
   const auto j = nlohmann::json::parse(metrics_json_text(m))["error_breakdown"];
   EXPECT_EQ(j["grid"]["median_m"].get<double>(), 0.25);
@@ -218,6 +220,7 @@ TEST(ErrorBreakdown, JsonBlockOnlyWithTruth) {
   EXPECT_EQ(j["heading"]["rooms"].get<int>(), 3);
   EXPECT_TRUE(j["heading"]["entry_error_deg_mean_abs"].is_null());
   EXPECT_EQ(j["heading"]["within_room_drift_deg_max_abs"].get<double>(), 1.5);
+  EXPECT_EQ(j["heading"]["exit_error_deg_max_abs"].get<double>(), 14.5);
 }
 
 }  // namespace

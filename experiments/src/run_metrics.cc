@@ -99,6 +99,7 @@ Json breakdown_json(const ErrorBreakdown& b) {
            {{"rooms", h.rooms},
             {"entry_error_deg_mean_abs", opt(h.entry_error_deg_mean_abs)},
             {"exit_error_deg_mean_abs", opt(h.exit_error_deg_mean_abs)},
+            {"exit_error_deg_max_abs", opt(h.exit_error_deg_max_abs)},
             {"within_room_drift_deg_mean_abs", opt(h.within_room_drift_deg_mean_abs)},
             {"within_room_drift_deg_max_abs", opt(h.within_room_drift_deg_max_abs)}}}};
 }

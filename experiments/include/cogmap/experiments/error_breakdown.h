@@ -77,6 +77,10 @@ struct HeadingBreakdown {
   std::size_t rooms = 0;
   std::optional<double> entry_error_deg_mean_abs;
   std::optional<double> exit_error_deg_mean_abs;
+  /// The worst room as the estimate left it (max over rooms of |error| at the last frame): the
+  /// run's tail, which a mean hides (one room turned 15° by a wrong correction draws the rest
+  /// of the map turned with it).
+  std::optional<double> exit_error_deg_max_abs;
   std::optional<double> within_room_drift_deg_mean_abs;  ///< mean |wrap(exit − entry)|
   std::optional<double> within_room_drift_deg_max_abs;
 };
