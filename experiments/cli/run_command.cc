@@ -156,7 +156,8 @@ const CommandRegistrar kRunRegistrar{
           ->check(CLI::ExistingFile);
       sub->add_option("--out", args->out, "run directory (default runs/<name>_seed<N>)")
           ->check(non_empty());
-      sub->add_option("--seed", args->seed, "replaces the experiment's seed");
+      sub->add_option("--seed", args->seed, "replaces the experiment's seed")
+          ->check(non_empty());  // --seed "" (an unset variable) ran with the file's seed
       sub->add_option("--set", args->sets, "override any key, e.g. --set mapper.cell_scale_mm=55")
           ->take_all()
           ->allow_extra_args(false);

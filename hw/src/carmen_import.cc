@@ -61,6 +61,10 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
       mapper::SensorFrame frame;
       frame.odometry = {f.number(1, "x"), f.number(2, "y"),
                         mapper::wrap_angle_rad(f.number(3, "theta"))};
+      // tv rv accel are not mapped, but a line of a type that is read is read whole.
+      f.number(4, "tv");
+      f.number(5, "rv");
+      f.number(6, "accel");
       frame.time_s = time_of(f.stamp(7, "timestamp"));
       odometry = Odometry{frame.odometry, frame.time_s};
       detail::push_frame(log, std::move(frame), path, line_no);
@@ -74,13 +78,20 @@ ImportedLog import_carmen_log(const std::filesystem::path& path) {
       // (and tv rv) before them; the field count decides.
       const std::size_t rest = f.size() > after ? f.size() - after : 0;
       if (rest != 3 && rest != 6 && rest != 8) f.fail(kSonarLayout, std::min(f.size(), after));
+      // Every line's mounts are read (the first line's are the geometry): a later line with
+      // garbage there is not the layout it claims.
+      std::vector<mapper::SonarMount> mounts;
+      for (long i = 0; i < n; ++i) {
+        const std::size_t k = poses_at + 3 * static_cast<std::size_t>(i);
+        mounts.push_back(
+            {f.number(k, "sonar x"), f.number(k + 1, "sonar y"), f.number(k + 2, "sonar theta")});
+      }
+      if (rest == 8) {  // robot x y theta tv rv: the velocities are read too
+        f.number(after + 3, "tv");
+        f.number(after + 4, "rv");
+      }
       if (!have_geometry && n > 0) {
-        log.geometry.sonars.clear();
-        for (long i = 0; i < n; ++i) {
-          const std::size_t k = poses_at + 3 * static_cast<std::size_t>(i);
-          log.geometry.sonars.push_back(
-              {f.number(k, "sonar x"), f.number(k + 1, "sonar y"), f.number(k + 2, "sonar theta")});
-        }
+        log.geometry.sonars = std::move(mounts);
         if (cone_rad > 0.0) log.geometry.sonar_beam_width_rad = cone_rad;
         have_geometry = true;
       }

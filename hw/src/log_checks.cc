@@ -163,9 +163,20 @@ void check_frame(const mapper::SensorFrame& f, const mapper::SensorFrame* previo
     in_range(f.true_pose->y_m, -lim, lim, "true y_m", where);
     in_range(f.true_pose->theta_rad, -1e6, 1e6, "true theta_rad", where);
   }
-  for (const mapper::SonarReading& r : f.sonar) {
+  const double earliest_s = (previous ? previous->time_s : f.time_s) - limits.reading_time_slack_s;
+  const double latest_s = f.time_s + limits.reading_time_slack_s;
+  for (std::size_t i = 0; i < f.sonar.size(); ++i) {
+    const mapper::SonarReading& r = f.sonar[i];
     in_range(r.range_m, 0.0, 1e3, "sonar range_m", where);
     in_range(r.time_s, -1e9, 1e9, "sonar time_s", where);
+    if (r.time_s < earliest_s || r.time_s > latest_s) {
+      throw LogError(
+          where + ": reading " + std::to_string(i + 1) + " fired at " + number_text(r.time_s) +
+          " s, more than " + number_text(limits.reading_time_slack_s) +
+          " s outside its frame's interval (" +
+          (previous ? number_text(previous->time_s) + " s" : std::string("start")) + ", " +
+          number_text(f.time_s) + " s]: a frame holds the pulses fired since the previous frame");
+    }
   }
   if (previous) {
     const double dt_s = f.time_s - previous->time_s;

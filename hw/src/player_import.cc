@@ -424,6 +424,11 @@ ImportedLog import_player_log(const std::filesystem::path& path) {
       if (f.size() != 14) f.fail("position2d data px py pa vx vy va stall", f.size());
       flush_position();  // two position lines in a row: the first becomes its own frame
       odometry = {f.number(7, "px"), f.number(8, "py"), mapper::wrap_angle_rad(f.number(9, "pa"))};
+      // The velocities are not mapped, but a line of a type that is read is read whole: garbage
+      // there means the line is not what it claims to be.
+      f.number(10, "vx");
+      f.number(11, "vy");
+      f.number(12, "va");
       stall = f.integer(13, "stall", 0, 255) != 0;  // a uint8_t; p2os writes 0 or 1
       pending_position = true;
       pending_time_s = time_s;

@@ -48,7 +48,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   world_check_start_outside run_start_outside bag_undeclared_connection bag_cloud_points_2g
   bag_cloud2_data_1g5 log_player_v1 log_carmen_sonar_only log_carmen_laser_only
   log_player_ranger_bad_geometry experiment_bool_yaml11 experiment_block_scalar_number
-  sweep_vary_quoted_number)
+  sweep_vary_quoted_number seed_empty set_key_trailing_dot log_reading_time_early
+  log_carmen_odom_velocity_garbage log_carmen_later_sonar_mounts log_player_velocity_garbage)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -243,6 +244,43 @@ setup() {
       good_log | sed 's/^F 0.5 /F inf /' >"$d/l.log"
       cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
       want_text="l.log:6: expected time_s (a finite number), got 'inf'" ;;
+    log_reading_time_early)  # found by fuzzing (session 56): mapped at the pose of 1000 s before
+      good_log | sed '3s/0,1.5,1,0.2$/0,1.5,1,-999.8/' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:3: reading 1 fired at -999.8 s, more than 1 s outside its frame's interval (0.1 s, 0.2 s]"
+      check() { [[ ! -e $d/run ]]; } ;;
+    log_carmen_odom_velocity_garbage)  # fuzzing, session 56: tv rv accel were never read (exit 0)
+      printf '%s\n' 'ODOM 0 0 0 abc 0 0 1100000000.000000 p2at 0.0' \
+        'SONAR 0.261799 2 1.50 2.25 0.147 0.136 1.570796 0.193 0.119 0.872665 1100000000.050000 p2at 0.05' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:1: expected tv at field 5, got 'abc'"
+      check() { [[ ! -e $d/run ]]; } ;;
+    log_carmen_later_sonar_mounts)  # fuzzing, session 56: only the first SONAR line's were read
+      printf '%s\n' 'ODOM 0 0 0 0 0 0 1100000000.000000 p2at 0.0' \
+        'SONAR 0.261799 2 1.50 2.25 0.147 0.136 1.570796 0.193 0.119 0.872665 1100000000.050000 p2at 0.05' \
+        'ODOM 0.05 0 0 0 0 0 1100000000.100000 p2at 0.1' \
+        'SONAR 0.261799 2 1.40 4.20 0.147 0.136 1.570796 abc nan 1e999 1100000000.150000 p2at 0.15' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:4: expected sonar x at field 9, got 'abc'"
+      check() { [[ ! -e $d/run ]]; } ;;
+    log_player_velocity_garbage)  # fuzzing, session 56: position2d vx vy va were never read
+      printf '%s\n' '## Player version 2.0.5' '## File version 0.3.0' \
+        '1130174476.000 16777343 6665 sonar 00 004 001 0002 +0.147 +0.136 +1.571 +0.193 +0.119 +0.873' \
+        '1130174476.100 16777343 6665 position2d 00 001 001 +00.000 +00.000 +0.000 abc nan xyz 0' \
+        '1130174476.100 16777343 6665 sonar 00 001 001 0002 +1.500 +2.250' >"$d/l.log"
+      cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
+      want_text="l.log:4: expected vx at field 11, got 'abc'"
+      check() { [[ ! -e $d/run ]]; } ;;
+    seed_empty)  # fuzzing, session 56: --seed "" (an unset variable) ran with the file's seed
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --seed '' --out "$d/run"); want_rc=2
+      want_text="--seed: must not be empty"
+      check() { [[ ! -e $d/run ]]; } ;;
+    set_key_trailing_dot)  # fuzzing, session 56: "duration_s.=1" set duration_s
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --set duration_s.=1 --out "$d/run"); want_rc=2
+      want_text="duration_s.: empty key component (from --set duration_s.=1)"
+      check() { [[ ! -e $d/run ]]; } ;;
     log_nan_mount)
       good_log | sed '1s/0.147,0.136,1.5708/nan,0.136,1.5708/' >"$d/l.log"
       cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2

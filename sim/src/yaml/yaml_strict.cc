@@ -443,6 +443,8 @@ void apply_override(YAML::Node& root, const std::string& assignment) {
   }
   const std::string key = assignment.substr(0, eq);
   const std::string value_text = assignment.substr(eq + 1);
+  // getline drops one trailing empty component: "duration_s." would set duration_s.
+  if (key.back() == '.') throw ConfigError("--set", 0, key, "empty key component");
   std::vector<std::string> parts;
   std::stringstream keys(key);
   for (std::string part; std::getline(keys, part, '.');) {

@@ -58,6 +58,15 @@ TEST(YamlStrict, OverrideKeepsTypesAndCreatesMappings) {
   EXPECT_FALSE(root["output"].get<bool>("figures"));
   EXPECT_THROW(apply_override(root.raw(), "novalue"), ConfigError);
   EXPECT_THROW(apply_override(root.raw(), "mapper.cell_scale_mm.x=1"), ConfigError);
+  for (const char* empty_part :
+       {"mapper.=1", ".mapper=1", "mapper..x=1", "mapper.cell_scale_mm.=1"}) {
+    EXPECT_NE(config_error_of([&] {
+                apply_override(root.raw(), empty_part);
+              }).find("empty key component"),
+              std::string::npos)
+        << empty_part;
+  }
+  EXPECT_EQ(root["mapper"].get<int>("cell_scale_mm"), 55);  // none of them touched the value
 }
 
 TEST(YamlStrict, KeyThatIsAListOrMappingIsRefusedWithItsLine) {

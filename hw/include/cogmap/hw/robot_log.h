@@ -40,6 +40,11 @@ struct LogLimits {
   /// frames: twice the header's top speed, plus 1 m for encoder resets and rounding.
   double jump_slack_m = 1.0;
   double speed_factor = 2.0;
+  /// A frame's readings are the pulses fired since the previous frame: each reading's time_s
+  /// may lie at most this far outside (previous frame, this frame] (for a log's first frame,
+  /// from this frame's time). A ring of 16 fires in well under a second; a reading stamped
+  /// 1000 s before its frame was mapped at whatever pose that time gave.
+  double reading_time_slack_s = 1.0;
 };
 
 /// The header line for `geometry`.
