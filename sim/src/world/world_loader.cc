@@ -1,5 +1,6 @@
 // Parses worlds/*.yaml strictly (docs/formats.md "World"): every key known, every number
 // finite, every shape non-degenerate, the start pose clear of everything.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -261,6 +262,48 @@ double signed_obstacle_distance_m(const Point2& p, const Obstacle& obstacle) {
   return geom::point_in_polygon(p, outline) ? -d : d;
 }
 
+// Refuses an obstacle whose bounds overlap more than kMaxObstaclePile others' (a sweep along x
+// over the bounds sorted by their lower x; it stops at the first pile found).
+void check_obstacle_piles(const WorldSpec& world) {
+  const std::size_t n = world.obstacles.size();
+  if (n <= kMaxObstaclePile) return;
+  std::vector<std::pair<Point2, Point2>> bounds(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Polyline outline = obstacle_outline(world.obstacles[i]);
+    Point2 lo = outline.front(), hi = outline.front();
+    for (const Point2& p : outline) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    bounds[i] = {lo, hi};
+  }
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::pair(bounds[a].first.x(), a) < std::pair(bounds[b].first.x(), b);
+  });
+  std::vector<std::size_t> overlaps(n, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    for (std::size_t m = k + 1; m < n && bounds[order[m]].first.x() <= bounds[i].second.x(); ++m) {
+      const std::size_t j = order[m];
+      if (bounds[j].first.y() > bounds[i].second.y() ||
+          bounds[j].second.y() < bounds[i].first.y()) {
+        continue;
+      }
+      for (const std::size_t o : {i, j}) {
+        if (++overlaps[o] <= kMaxObstaclePile) continue;
+        const SourceRef& ref = world.obstacles[o].source;
+        throw yaml::ConfigError(world.file.string(), ref.line, ref.key,
+                                "its bounds overlap those of more than " +
+                                    std::to_string(kMaxObstaclePile) +
+                                    " other obstacles: a pile that is no building (turning it "
+                                    "into surfaces would cost the cube of its size)");
+      }
+    }
+  }
+}
+
 void check_start(const WorldSpec& world, const WorldCheckOptions& options) {
   const Point2 p = world.start.translation();
   auto complain = [&](double d, const std::string& what, const SourceRef& ref) {
@@ -310,6 +353,7 @@ WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options) 
       world.obstacles.push_back(parse_obstacle(obstacles->at(i), world, default_material));
     }
   }
+  check_obstacle_piles(world);
   const yaml::Node start = root["start"];
   start.expect_keys({"x_m", "y_m", "theta_deg"});
   const auto theta = start.child("theta_deg");
