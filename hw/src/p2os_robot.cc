@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
+#include "cogmap/hw/robot_log.h"
 #include "cogmap/mapper/seam/robot_models.h"
 #include "p2os_text.h"
 
@@ -15,6 +17,12 @@ using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
 namespace {
+
+std::string number_text(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
 constexpr milliseconds kReadSlice{20};       // I/O loop granularity: command latency bound
 constexpr std::uint64_t kLoggedBadSips = 5;  // then every 1000th: a bad peer must not flood
 
@@ -73,35 +81,63 @@ std::optional<p2os::Packet> P2osRobot::read_packet(milliseconds timeout) {
   }
 }
 
+void P2osRobot::reject_sip(const p2os::Packet& packet, const std::string& why) {
+  ++bad_since_sip_;
+  last_bad_sip_ = Clock::now();
+  std::lock_guard lock(mutex_);
+  last_bad_sip_reason_ = "SIP at stream offset " + std::to_string(packet.offset) + ": " + why;
+  ++stats_.bad_sips;
+  if (stats_.bad_sips <= kLoggedBadSips || stats_.bad_sips % 1000 == 0) {
+    log(stream_->name() + ": " + last_bad_sip_reason_ +
+        (stats_.bad_sips == kLoggedBadSips ? " (further undecodable SIPs are counted; every "
+                                             "1000th is logged)"
+         : stats_.bad_sips > kLoggedBadSips
+             ? " (" + std::to_string(stats_.bad_sips) + " undecodable SIPs so far)"
+             : ""));
+  }
+}
+
 void P2osRobot::handle_sip(const p2os::Packet& packet) {
   p2os::Sip sip;
   try {
     sip = p2os::decode_sip(packet.body);
   } catch (const p2os::DecodeError& e) {
-    ++bad_since_sip_;
-    last_bad_sip_ = Clock::now();
-    std::lock_guard lock(mutex_);
-    last_bad_sip_reason_ =
-        "SIP at stream offset " + std::to_string(packet.offset) + ": " + e.what();
-    ++stats_.bad_sips;
-    if (stats_.bad_sips <= kLoggedBadSips || stats_.bad_sips % 1000 == 0) {
-      log(stream_->name() + ": " + last_bad_sip_reason_ +
-          (stats_.bad_sips == kLoggedBadSips ? " (further undecodable SIPs are counted; every "
-                                               "1000th is logged)"
-           : stats_.bad_sips > kLoggedBadSips
-               ? " (" + std::to_string(stats_.bad_sips) + " undecodable SIPs so far)"
-               : ""));
-    }
+    reject_sip(packet, e.what());
     return;
   }
-  last_sip_ = Clock::now();
+  const auto now = Clock::now();
+  const double time_s = options_.clock == FrameClock::kHost
+                            ? std::chrono::duration<double>(now - start_).count()
+                            : static_cast<double>(sip_count_ + 1) * options_.sip_period_s;
+  // Odometry that moves further than the robot can drive since the last frame (the bound a
+  // log's frames are held to, LogLimits) is not a robot's: the fuzzer's peer sent SIPs with
+  // valid checksums 48 m apart, and `drive` mapped them and exited 0 while `replay` of its own
+  // recording refused them. Such a SIP is undecodable; the unwrapper forgets it.
+  const OdometryUnwrapper unwrapped_before = odometry_;
+  const mapper::Pose2 pose = odometry_.update(sip.x_pos, sip.y_pos, sip.th_pos);
+  if (have_accepted_) {
+    const LogLimits limits;
+    const double dt_s = std::max(0.0, time_s - accepted_time_s_);
+    const double jump_m = (pose.translation() - accepted_xy_).norm();
+    const double allowed_m =
+        limits.jump_slack_m + limits.speed_factor * geometry_.max_speed_mps * dt_s;
+    if (!(jump_m <= allowed_m)) {
+      odometry_ = unwrapped_before;
+      reject_sip(packet, "odometry jumps " + number_text(jump_m) + " m in " + number_text(dt_s) +
+                             " s (at most " + number_text(allowed_m) + " m at max_speed_mps " +
+                             number_text(geometry_.max_speed_mps) + ")");
+      return;
+    }
+  }
+  have_accepted_ = true;
+  accepted_time_s_ = time_s;
+  accepted_xy_ = pose.translation();
+  last_sip_ = now;
   bad_since_sip_ = 0;
   ++sip_count_;
   mapper::SensorFrame frame;
-  frame.time_s = options_.clock == FrameClock::kHost
-                     ? std::chrono::duration<double>(last_sip_ - start_).count()
-                     : static_cast<double>(sip_count_) * options_.sip_period_s;
-  frame.odometry = odometry_.update(sip.x_pos, sip.y_pos, sip.th_pos);
+  frame.time_s = time_s;
+  frame.odometry = pose;
   frame.stall_left = sip.left_stalled();
   frame.stall_right = sip.right_stalled();
   std::uint64_t unknown = 0;

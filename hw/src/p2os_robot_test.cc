@@ -2,6 +2,7 @@
 // server's side of the link: left open, corruption, silence, controller reset, counter wrap.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <thread>
@@ -252,6 +253,36 @@ TEST(P2osRobotPty, ControllerResetRebasesOdometryWithoutJump) {
     EXPECT_LT(std::hypot(b.x_m - a.x_m, b.y_m - a.y_m), 0.1) << "frame " << i;
   }
   EXPECT_GT(frames.back().odometry.x_m, frames[10].odometry.x_m);  // kept going after reset
+}
+
+// SIPs whose odometry moves further than the robot can drive (found by fuzzing: a peer's SIPs
+// with valid checksums 48 m apart were mapped, `drive` exited 0) are undecodable, not frames:
+// counted, named by stream offset, and a peer that sends nothing else is bad input.
+TEST(P2osRobotPty, OdometryJumpingFurtherThanTheRobotDrivesIsNoFrame) {
+  PtyRobot served;
+  served.start();
+  P2osRobot robot(served.client(), fast_options());
+  robot.command({0.3, 0.0});
+  auto frames = frames_for(robot, 800ms);
+  ASSERT_GE(frames.size(), 4u);
+  // 20 m within one 0.1 s SIP. 1 m + 2 x 0.75 m/s x dt is allowed since the last frame, so the
+  // new place would be admitted after 12.7 s; the session ends first (2 s without a frame).
+  served.body().teleport(20.0);
+  const auto more = frames_for(robot, 8000ms);  // ends with the session
+  frames.insert(frames.end(), more.begin(), more.end());
+  const P2osStats stats = robot.stats();
+  const std::string failure = robot.failure();
+  const P2osFailureKind kind = robot.failure_kind();
+  robot.shutdown();
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    const auto& a = frames[i - 1].odometry;
+    const auto& b = frames[i].odometry;
+    EXPECT_LT(std::hypot(b.x_m - a.x_m, b.y_m - a.y_m), 0.1) << "frame " << i;
+  }
+  EXPECT_GE(stats.bad_sips, 5u);
+  EXPECT_EQ(kind, P2osFailureKind::kBadBytes);
+  EXPECT_NE(failure.find("SIP at stream offset"), std::string::npos) << failure;
+  EXPECT_NE(failure.find("odometry jumps"), std::string::npos) << failure;
 }
 
 TEST(P2osRobotPty, SubclassP2at8PlusSelectsItsConversionFactors) {

@@ -146,6 +146,11 @@ class KinematicBody final : public mapper::Robot {
     cmd_ = cmd;
   }
   void stop() override { command({}); }
+  /// Moves the body dx_m along x at once: odometry no robot could drive.
+  void teleport(double dx_m) {
+    std::lock_guard lock(mutex_);
+    pose_.x_m += dx_m;
+  }
   double distance_m() const {
     std::lock_guard lock(mutex_);
     return distance_m_;

@@ -153,6 +153,7 @@ class P2osRobot final : public mapper::Robot {
   void receive(std::chrono::milliseconds timeout);  // stream -> decoder, abandons cut packets
   void note_drops();  // the decoder's discards -> stats_ and last_drop_
   void handle_sip(const p2os::Packet& packet);
+  void reject_sip(const p2os::Packet& packet, const std::string& why);  // counted, logged
   void send_motion();
   void log(const std::string& message) const;
 
@@ -167,6 +168,11 @@ class P2osRobot final : public mapper::Robot {
   std::chrono::steady_clock::time_point last_sip_;
   std::chrono::steady_clock::time_point last_sent_;
   std::uint64_t sip_count_ = 0;
+  // The last SIP made a frame of: a SIP whose odometry moved further from it than the robot
+  // can drive (LogLimits, as a log's frames are held) is undecodable, not a frame.
+  bool have_accepted_ = false;
+  double accepted_time_s_ = 0.0;
+  mapper::Point2 accepted_xy_{0.0, 0.0};
   // Undecodable SIPs since the last good one: a peer whose every SIP fails to parse is not
   // silent, and reconnecting cannot help, so the session ends with the reason.
   std::uint64_t bad_since_sip_ = 0;
