@@ -8,6 +8,7 @@
 ///   never a file that exists unless --force says to replace it.
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 
 #include <cmath>
 #include <filesystem>
@@ -61,6 +62,21 @@ inline CLI::Validator finite_positive() {
         return error;
       },
       "finite number > 0");
+}
+
+/// A count of 1 or more: CLI::PositiveNumber said "Value 0 not in range 0.000000 to 1797693..."
+/// (309 digits of DBL_MAX) for `--max-runs 0`.
+inline CLI::Validator count_of_one_or_more() {
+  return CLI::Validator(
+      [](std::string& text) {
+        std::size_t value = 0;
+        const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (r.ec != std::errc() || r.ptr != text.data() + text.size() || value < 1) {
+          return "'" + text + "' is not a whole number of 1 or more";
+        }
+        return std::string();
+      },
+      "whole number >= 1");
 }
 
 /// A path or address given on the command line must not be empty: `--out ""` (an unset shell

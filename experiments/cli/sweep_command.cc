@@ -195,7 +195,7 @@ const CommandRegistrar kSweepRegistrar{
           "merge shard results with --merge DIR...");
       sub->add_option("inputs", args->inputs, "SWEEP.yaml, or with --merge the shard output dirs")
           ->required();
-      sub->add_option("--jobs,-j", args->jobs, "worker threads (default: all cores)");
+      sub->add_option("--jobs,-j", args->jobs, "worker threads (default, or 0: one per core)");
       sub->add_option("--shard", args->shard, "run only shard K of N, e.g. 3/8 (default 1/1)");
       sub->add_option("--out", args->out,
                       "output directory (default sweeps/<sweep name>; for --merge the current one)")
@@ -210,7 +210,7 @@ const CommandRegistrar kSweepRegistrar{
                     "replacing them");
       sub->add_option("--max-runs", args->max_runs,
                       "refuse sweeps with more runs than this (default 10000)")
-          ->check(CLI::PositiveNumber);
+          ->check(count_of_one_or_more());
       sub->callback([&exit_code, args] { exit_code = args->merge ? merge(*args) : sweep(*args); });
     }};
 

@@ -49,7 +49,8 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   bag_cloud2_data_1g5 log_player_v1 log_carmen_sonar_only log_carmen_laser_only
   log_player_ranger_bad_geometry experiment_bool_yaml11 experiment_block_scalar_number
   sweep_vary_quoted_number seed_empty set_key_trailing_dot log_reading_time_early
-  log_carmen_odom_velocity_garbage log_carmen_later_sonar_mounts log_player_velocity_garbage)
+  log_carmen_odom_velocity_garbage log_carmen_later_sonar_mounts log_player_velocity_garbage
+  sweep_max_runs_zero)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -271,6 +272,12 @@ setup() {
       cmd=("$cogmap" replay "$d/l.log" --out "$d/run"); want_rc=2
       want_text="l.log:4: expected vx at field 11, got 'abc'"
       check() { [[ ! -e $d/run ]]; } ;;
+    sweep_max_runs_zero)  # fuzzing, session 56: the message printed 309 digits of DBL_MAX
+      short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
+      printf 'base: e.yaml\nseeds: [1]\n' >"$d/s.sweep.yaml"
+      cmd=("$cogmap" sweep "$d/s.sweep.yaml" --max-runs 0 --out "$d/sw"); want_rc=2
+      want_text="--max-runs: '0' is not a whole number of 1 or more"
+      check() { [[ ! -e $d/sw ]]; } ;;
     seed_empty)  # fuzzing, session 56: --seed "" (an unset variable) ran with the file's seed
       short_experiment e "$W/two_rooms.yaml" 2 >"$d/e.yaml"
       cmd=("$cogmap" run "$d/e.yaml" --seed '' --out "$d/run"); want_rc=2
