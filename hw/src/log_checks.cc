@@ -150,6 +150,14 @@ void check_geometry(const mapper::RobotGeometry& g, const std::string& where) {
   }
 }
 
+std::string odometry_jump_problem(double jump_m, double dt_s, double max_speed_mps,
+                                  const LogLimits& limits) {
+  const double allowed_m = limits.jump_slack_m + limits.speed_factor * max_speed_mps * dt_s;
+  if (jump_m <= allowed_m) return {};
+  return "odometry jumps " + number_text(jump_m) + " m in " + number_text(dt_s) + " s (at most " +
+         number_text(allowed_m) + " m at max_speed_mps " + number_text(max_speed_mps) + ")";
+}
+
 void check_frame(const mapper::SensorFrame& f, const mapper::SensorFrame* previous,
                  const mapper::RobotGeometry& geometry, const LogLimits& limits,
                  const std::string& where) {
@@ -186,13 +194,8 @@ void check_frame(const mapper::SensorFrame& f, const mapper::SensorFrame* previo
     }
     const double jump_m = std::hypot(f.odometry.x_m - previous->odometry.x_m,
                                      f.odometry.y_m - previous->odometry.y_m);
-    const double allowed_m =
-        limits.jump_slack_m + limits.speed_factor * geometry.max_speed_mps * dt_s;
-    if (jump_m > allowed_m) {
-      throw LogError(where + ": odometry jumps " + number_text(jump_m) + " m in " +
-                     number_text(dt_s) + " s (at most " + number_text(allowed_m) +
-                     " m at max_speed_mps " + number_text(geometry.max_speed_mps) + ")");
-    }
+    const std::string jump = odometry_jump_problem(jump_m, dt_s, geometry.max_speed_mps, limits);
+    if (!jump.empty()) throw LogError(where + ": " + jump);
   }
 }
 

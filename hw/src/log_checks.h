@@ -38,6 +38,13 @@ std::string printable(std::string_view text, std::size_t max_bytes = 80);
 /// body and limits non-finite, non-positive or far outside a mobile robot's.
 void check_geometry(const mapper::RobotGeometry& geometry, const std::string& where);
 
+/// Odometry that moved `jump_m` in `dt_s` faster than a robot of `max_speed_mps` can drive
+/// (more than limits.jump_slack_m + limits.speed_factor x max_speed_mps x dt_s): what is wrong,
+/// "odometry jumps X m in T s (at most Y m at max_speed_mps Z)"; empty when it is within that.
+/// check_frame holds a log's frames to it, P2osRobot its SIPs.
+std::string odometry_jump_problem(double jump_m, double dt_s, double max_speed_mps,
+                                  const LogLimits& limits);
+
 /// Throws LogError ("<where>: ...") for a frame whose numbers are not finite, whose time is
 /// before `previous`'s, or whose odometry leaves limits.max_coordinate_m or jumps more than
 /// limits.jump_slack_m + limits.speed_factor x max_speed_mps x dt from `previous` (null for

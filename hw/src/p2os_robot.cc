@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "cogmap/hw/robot_log.h"
 #include "cogmap/mapper/seam/robot_models.h"
+#include "log_checks.h"
 #include "p2os_text.h"
 
 namespace cogmap::hw {
@@ -18,11 +18,6 @@ using std::chrono::milliseconds;
 
 namespace {
 
-std::string number_text(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
 constexpr milliseconds kReadSlice{20};       // I/O loop granularity: command latency bound
 constexpr std::uint64_t kLoggedBadSips = 5;  // then every 1000th: a bad peer must not flood
 
@@ -116,16 +111,12 @@ void P2osRobot::handle_sip(const p2os::Packet& packet) {
   const OdometryUnwrapper unwrapped_before = odometry_;
   const mapper::Pose2 pose = odometry_.update(sip.x_pos, sip.y_pos, sip.th_pos);
   if (have_accepted_) {
-    const LogLimits limits;
-    const double dt_s = std::max(0.0, time_s - accepted_time_s_);
-    const double jump_m = (pose.translation() - accepted_xy_).norm();
-    const double allowed_m =
-        limits.jump_slack_m + limits.speed_factor * geometry_.max_speed_mps * dt_s;
-    if (!(jump_m <= allowed_m)) {
+    const std::string jump = detail::odometry_jump_problem(
+        (pose.translation() - accepted_xy_).norm(), std::max(0.0, time_s - accepted_time_s_),
+        geometry_.max_speed_mps, LogLimits{});
+    if (!jump.empty()) {
       odometry_ = unwrapped_before;
-      reject_sip(packet, "odometry jumps " + number_text(jump_m) + " m in " + number_text(dt_s) +
-                             " s (at most " + number_text(allowed_m) + " m at max_speed_mps " +
-                             number_text(geometry_.max_speed_mps) + ")");
+      reject_sip(packet, jump);
       return;
     }
   }
