@@ -51,6 +51,16 @@ class PtyRobot {
   std::thread thread_;
 };
 
+// Consecutive frames' odometry never more than 0.1 m apart (a SIP is 0.1 s; the body drives at
+// most 0.75 m/s).
+void expect_no_odometry_jump(const std::vector<mapper::SensorFrame>& frames) {
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    const auto& a = frames[i - 1].odometry;
+    const auto& b = frames[i].odometry;
+    EXPECT_LT(std::hypot(b.x_m - a.x_m, b.y_m - a.y_m), 0.1) << "frame " << i;
+  }
+}
+
 P2osRobotOptions fast_options() {
   P2osRobotOptions o;
   o.silence_timeout = 2000ms;
@@ -247,11 +257,7 @@ TEST(P2osRobotPty, ControllerResetRebasesOdometryWithoutJump) {
   robot.shutdown();
   EXPECT_EQ(stats.resets, 1);
   EXPECT_EQ(stats.connections, 2);
-  for (std::size_t i = 1; i < frames.size(); ++i) {
-    const auto& a = frames[i - 1].odometry;
-    const auto& b = frames[i].odometry;
-    EXPECT_LT(std::hypot(b.x_m - a.x_m, b.y_m - a.y_m), 0.1) << "frame " << i;
-  }
+  expect_no_odometry_jump(frames);
   EXPECT_GT(frames.back().odometry.x_m, frames[10].odometry.x_m);  // kept going after reset
 }
 
@@ -274,11 +280,7 @@ TEST(P2osRobotPty, OdometryJumpingFurtherThanTheRobotDrivesIsNoFrame) {
   const std::string failure = robot.failure();
   const P2osFailureKind kind = robot.failure_kind();
   robot.shutdown();
-  for (std::size_t i = 1; i < frames.size(); ++i) {
-    const auto& a = frames[i - 1].odometry;
-    const auto& b = frames[i].odometry;
-    EXPECT_LT(std::hypot(b.x_m - a.x_m, b.y_m - a.y_m), 0.1) << "frame " << i;
-  }
+  expect_no_odometry_jump(frames);
   EXPECT_GE(stats.bad_sips, 5u);
   EXPECT_EQ(kind, P2osFailureKind::kBadBytes);
   EXPECT_NE(failure.find("SIP at stream offset"), std::string::npos) << failure;
