@@ -171,7 +171,17 @@ void configure_raw_terminal(int fd, int baud, const std::string& name) {
 std::unique_ptr<FdStream> open_serial_port(const std::string& device, int baud) {
   baud_constant(baud);  // reject a bad rate before touching the device
   const int fd = ::open(device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw StreamError(sys_error("open", device));
+  if (fd < 0) {
+    const int error = errno;
+    // A directory (or a path through a file) is a wrong --port, as a regular file is below; a
+    // device that is missing or busy may be a robot not plugged in yet (exit 1).
+    if (error == EISDIR || error == ENOTDIR) {
+      throw std::invalid_argument(device + ": " +
+                                  (error == EISDIR ? "a directory" : "no such path") +
+                                  ", not a serial port or terminal device (check the device name)");
+    }
+    throw StreamError(sys_error("open", device));
+  }
   auto stream = std::make_unique<FdStream>(fd, device);
   // A regular file, /dev/null or a pipe is a wrong --port (bad input), not a robot that does
   // not answer: refused before anything is written to it.
