@@ -261,6 +261,8 @@ Experiment parse_experiment(const Node& root, const std::filesystem::path& file)
   Experiment e;
   e.file = file;
   e.name = required_text(root, "name", "must not be empty");
+  // Found by fuzzing (session 56): an ESC sequence in a name was printed raw on the terminal.
+  yaml::expect_one_printable_line(root["name"], e.name);
   (void)optional_text(root, "description");
   const std::string world =
       required_text(root, "world", "must not be empty (a world file, or 'none')");

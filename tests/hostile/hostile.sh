@@ -50,7 +50,7 @@ CASES=(world_tiny_segment world_jog_2mm world_huge_coordinates world_check_tiny_
   log_player_ranger_bad_geometry experiment_bool_yaml11 experiment_block_scalar_number
   sweep_vary_quoted_number seed_empty set_key_trailing_dot log_reading_time_early
   log_carmen_odom_velocity_garbage log_carmen_later_sonar_mounts log_player_velocity_garbage
-  sweep_max_runs_zero drive_port_directory)
+  sweep_max_runs_zero drive_port_directory name_control_character)
 
 # A valid cogmap log of 9 frames, moving 1 cm per 100 ms.
 good_log() {
@@ -406,6 +406,11 @@ PY
       cmd=("$cogmap" drive --tcp "127.0.0.1:$(cat "$d/port")" --duration 3 --out "$d/run"); want_rc=2
       want_text="only bytes that do not decode as P2OS came back"; limit_s=6
       check() { kill "$peer" 2>/dev/null; [[ $text == *"none formed a packet; the last discard: "*" bytes at stream offsets "* ]]; } ;;
+    name_control_character)  # fuzzing, session 56: an ESC sequence printed raw on the terminal
+      printf 'name: "e\\x1b[2J"\nworld: %s/two_rooms.yaml\nduration_s: 2\n' "$W" >"$d/e.yaml"
+      cmd=("$cogmap" run "$d/e.yaml" --out "$d/run"); want_rc=2
+      want_text="e.yaml:1: name: holds a control character (byte 0x1b at offset 1); a name is one line of printable text"
+      check() { [[ ! -e $d/run && $text != *$'\e'* ]]; } ;;
     drive_port_directory)  # fuzzing, session 56: "open: Is a directory", exit 1 (a failed run)
       cmd=("$cogmap" drive --port "$d" --duration 1 --out "$d/run"); want_rc=2
       want_text="$d: a directory, not a serial port or terminal device"

@@ -340,6 +340,7 @@ WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options) 
   world.file = root.file();
   world.name = root.get<std::string>("name");
   if (world.name.empty()) root["name"].fail("the world needs a non-empty name");
+  yaml::expect_one_printable_line(root["name"], world.name);  // `world check` prints it
   world.description = root.get_or<std::string>("description", "");
   if (const auto materials = root.child("materials")) parse_materials(*materials, world);
   int default_material = 0;  // painted_wall, unless the world says otherwise

@@ -193,6 +193,17 @@ void refuse_strings(const Node& node, const std::string& expected,
 
 }  // namespace
 
+void expect_one_printable_line(const Node& node, std::string_view text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    if (b >= 0x20 && b != 0x7F) continue;
+    std::ostringstream msg;
+    msg << "holds a control character (byte 0x" << std::hex << static_cast<int>(b) << std::dec
+        << " at offset " << i << "); a name is one line of printable text";
+    node.fail(msg.str());
+  }
+}
+
 std::size_t invalid_utf8_at(std::string_view text) {
   std::size_t i = 0;
   while (i < text.size()) {

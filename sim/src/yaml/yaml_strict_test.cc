@@ -50,6 +50,20 @@ TEST(YamlStrict, SyntaxErrorReportsLine) {
   EXPECT_NE(msg.find("YAML syntax"), std::string::npos);
 }
 
+TEST(YamlStrict, ANameIsOnePrintableLine) {
+  const Node root = Node::load_string("name: x\n", "e.yaml");
+  EXPECT_NO_THROW(expect_one_printable_line(root["name"], "caf\xc3\xa9 r\xc3\xa4ume 2"));
+  for (const auto& [text, byte] : {std::pair<std::string, std::string>{"a\tb", "0x9 at offset 1"},
+                                   {"a\nb", "0xa at offset 1"},
+                                   {"e\x1b[2J", "0x1b at offset 1"},
+                                   {"del\x7f", "0x7f at offset 3"}}) {
+    const std::string msg = config_error_of([&] { expect_one_printable_line(root["name"], text); });
+    EXPECT_NE(msg.find("e.yaml:1: name: holds a control character (byte " + byte + ")"),
+              std::string::npos)
+        << msg;
+  }
+}
+
 TEST(YamlStrict, OverrideKeepsTypesAndCreatesMappings) {
   Node root = Node::load_string("mapper:\n  cell_scale_mm: 100\n", "e.yaml");
   apply_override(root.raw(), "mapper.cell_scale_mm=55");

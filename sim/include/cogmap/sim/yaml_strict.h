@@ -120,6 +120,11 @@ class Node {
 /// code points past U+10FFFF), or std::string_view::npos when all of it is.
 std::size_t invalid_utf8_at(std::string_view text);
 
+/// Throws ConfigError at `node` when `text` (its value) holds a control character (a byte
+/// below 0x20, or 0x7F), naming the byte and its offset: a name titles figures and the
+/// commands' messages, and an ESC sequence or newline in it reached the terminal raw.
+void expect_one_printable_line(const Node& node, std::string_view text);
+
 /// Applies one `--set a.b.c=value` override to a document: walks (creating mappings as needed)
 /// and sets the leaf to `value` parsed as YAML (so "55", "true", "[1, 2]" keep their types).
 /// Throws ConfigError (file "--set") for a malformed assignment, a value that is not UTF-8
