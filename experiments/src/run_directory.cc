@@ -6,7 +6,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <regex>
+#include <string_view>
 #include <system_error>
 
 #include "cogmap/experiments/runner.h"
@@ -153,7 +155,7 @@ void check_run_directory(const fs::path& dir, const std::vector<fs::path>& input
                             " already holds a finished run (metrics.json); pass --force to "
                             "replace it or choose another --out");
   }
-  if (fs::exists(dir / kRunMarkerName, ec)) return;
+  if (holds_marker(dir, kRunMarkerName, kRunMarkerText)) return;
   const std::string foreign = first_foreign_entry(dir, is_run_product);
   if (!foreign.empty()) {
     throw RunDirectoryError(dir.string() + ": holds " + foreign +
@@ -231,12 +233,22 @@ std::string run_experiment_yaml(const Experiment& experiment, const fs::path& di
   return std::string(emitter.c_str()) + "\n";
 }
 
+bool holds_marker(const fs::path& dir, const char* name, std::string_view text) {
+  std::error_code ec;
+  const fs::path marker = dir / name;
+  if (!fs::is_regular_file(marker, ec) || fs::file_size(marker, ec) != text.size() || ec) {
+    return false;
+  }
+  std::ifstream in(marker, std::ios::binary);
+  std::string held(text.size(), '\0');
+  return in.read(held.data(), static_cast<std::streamsize>(held.size())) && held == text;
+}
+
 void prepare_run_directory(const fs::path& dir, const Experiment& experiment,
                            mapper::io::Durability durability) {
   std::vector<fs::path> inputs{experiment.file};
   check_run_directory(dir, inputs, FinishedRun::kReplace);  // the caller decided on a finished run
-  mapper::io::write_file_atomic(dir / kRunMarkerName,
-                                "cogmap run directory (docs/reliability.md)\n", durability);
+  mapper::io::write_file_atomic(dir / kRunMarkerName, kRunMarkerText, durability);
   for (const fs::path& d : {dir, dir / "asrs", dir / "figures"}) {
     std::error_code ec;
     if (!fs::is_symlink(d, ec)) mapper::io::remove_stale_temp_files(d);

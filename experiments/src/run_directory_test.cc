@@ -57,9 +57,19 @@ TEST(RunDirectory, NewEmptyAndEarlierRunDirectoriesAreAccepted) {
   }
   EXPECT_EQ(run_dir_error_of(old, {}, FinishedRun::kReplace), "");
   // With the marker anything goes (later cogmap versions may add outputs).
-  write(base / "marked" / kRunMarkerName, "");
+  write(base / "marked" / kRunMarkerName, kRunMarkerText);
   write(base / "marked" / "future_output.bin", "");
   EXPECT_EQ(run_dir_error_of(base / "marked", {}), "");
+  // A marker made by hand (empty, or other text) makes nothing ours: a user's grid image
+  // beside it, with no run's record, is refused (found by fuzzing, session 56).
+  for (const std::string& fake :
+       std::vector<std::string>{"", "cogmap run directory\n", std::string(kRunMarkerText) + "x"}) {
+    const fs::path d = fresh_dir("fake_marker");
+    write(d / kRunMarkerName, fake);
+    write(d / "grid_000.pgm", "mine");
+    EXPECT_NE(run_dir_error_of(d, {}).find("holds neither the run marker nor"), std::string::npos)
+        << "'" << fake << "'";
+  }
 }
 
 TEST(RunDirectory, ForeignFilesAndInputFoldersAreRefused) {
@@ -70,7 +80,7 @@ TEST(RunDirectory, ForeignFilesAndInputFoldersAreRefused) {
             std::string::npos);
   // The folder of the experiment itself, even if it looks like a run directory.
   const fs::path run = fresh_dir("run");
-  write(run / kRunMarkerName, "");
+  write(run / kRunMarkerName, kRunMarkerText);
   write(run / "experiment.yaml", "name: x\n");
   EXPECT_NE(run_dir_error_of(run, {run / "experiment.yaml"}).find("is the folder of the input"),
             std::string::npos);
@@ -88,7 +98,7 @@ TEST(RunDirectory, LinkedRunFoldersAreRefusedAndNeverClearedThrough) {
   for (const bool marked : {false, true}) {
     const fs::path d = base / (marked ? "marked" : "plain");
     fs::create_directories(d);
-    if (marked) write(d / kRunMarkerName, "");
+    if (marked) write(d / kRunMarkerName, kRunMarkerText);
     write(d / "experiment.yaml", "name: x\n");
     fs::create_directory_symlink(base / "photos", d / "figures");
     EXPECT_NE(run_dir_error_of(d, {}).find("figures: is a symbolic link"), std::string::npos) << d;
@@ -128,7 +138,7 @@ TEST(RunDirectory, RunLikeNamesWithoutARunsRecordAreRefused) {
 
 TEST(RunDirectory, AFinishedRunIsReplacedOnlyWhenAskedTo) {
   const fs::path d = fresh_dir("finished");
-  write(d / kRunMarkerName, "");
+  write(d / kRunMarkerName, kRunMarkerText);
   write(d / "metrics.json", "{}");
   EXPECT_NE(
       run_dir_error_of(d, {}).find("already holds a finished run (metrics.json); pass --force"),
@@ -152,7 +162,7 @@ TEST(RunDirectory, LockKeepsASecondWriterOut) {
 
 TEST(RunDirectory, PrepareRemovesStaleTempFilesAndOldOutputsOnly) {
   const fs::path d = fresh_dir("prepare");
-  write(d / kRunMarkerName, "");
+  write(d / kRunMarkerName, kRunMarkerText);
   for (const char* f : {".grid_066.pgm.tmp-4242-7", "asrs/.003.json.tmp-1-0",
                         "figures/.room_001_stages.png.tmp.4242.3", "metrics.json", "asrs/003.json",
                         "figures/map_before_after.png"}) {

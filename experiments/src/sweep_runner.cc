@@ -160,7 +160,7 @@ void check_sweep_directory(const fs::path& dir, const SweepOutputs& outputs, boo
                               ": not a regular file (a directory, device or pipe); choose "
                               "another --out");
   }
-  if (force || fs::exists(dir / kSweepMarkerName, ec)) return;
+  if (force || holds_marker(dir, kSweepMarkerName, kSweepMarkerText)) return;
   std::vector<std::string> foreign;
   if (fs::exists(fs::symlink_status(results, ec))) {
     // A results file of this very sweep from before the marker: resuming it must still work.
@@ -179,11 +179,7 @@ void check_sweep_directory(const fs::path& dir, const SweepOutputs& outputs, boo
 }
 
 void mark_sweep_directory(const fs::path& dir, mapper::io::Durability durability) {
-  mapper::io::write_file_atomic(
-      dir / kSweepMarkerName,
-      "cogmap sweep output directory: its results files and plots/ are replaced by the next "
-      "sweep or --merge\n",
-      durability);
+  mapper::io::write_file_atomic(dir / kSweepMarkerName, kSweepMarkerText, durability);
 }
 
 std::string results_file_name(Shard shard) {

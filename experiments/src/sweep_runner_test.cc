@@ -317,6 +317,12 @@ TEST(SweepRunner, OwnDirectoryIsAcceptedByMarkerOrByHeader) {
   // A header that merely begins like ours is not ours.
   EXPECT_THROW(check_sweep_directory(o.out_dir, {"results.csv", "run,mapper.cell", true}, false),
                SweepDirectoryError);
+  // A marker made by hand (empty) makes another sweep's results no more ours (fuzzing, session
+  // 56: an empty marker was enough).
+  std::ofstream(o.out_dir / kSweepMarkerName) << "";
+  EXPECT_THROW(
+      check_sweep_directory(o.out_dir, {"results.csv", "run,mapper.grid,seed", true}, false),
+      SweepDirectoryError);
 }
 
 TEST(SweepRunner, OutputThatIsNotADirectoryOrFileIsRefusedEvenWithForce) {

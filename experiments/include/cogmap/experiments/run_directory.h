@@ -22,8 +22,15 @@ class RunDirectoryError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The marker file every run directory gets first (its presence makes a directory ours).
+/// The marker file every run directory gets first: a regular file holding kRunMarkerText makes a
+/// directory ours (an empty one made by hand did too, and let a run write over a user's
+/// grid_000.pgm there: fuzzing, session 56).
 inline constexpr const char* kRunMarkerName = ".cogmap-run";
+inline constexpr const char* kRunMarkerText = "cogmap run directory (docs/reliability.md)\n";
+
+/// Whether `dir` holds marker file `name` as a cogmap command writes it: a regular file with
+/// exactly `text` (a marker made by hand, empty or not, makes nothing ours).
+bool holds_marker(const std::filesystem::path& dir, const char* name, std::string_view text);
 /// The lock file (flock) of a run directory.
 inline constexpr const char* kRunLockName = ".cogmap-lock";
 

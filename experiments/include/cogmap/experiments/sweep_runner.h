@@ -60,6 +60,9 @@ std::string results_file_name(Shard shard);
 /// The marker every `cogmap sweep` writes into its output directory before its first run: with
 /// it, the directory's results files and plots/ are a sweep's to replace on the next call.
 inline constexpr const char* kSweepMarkerName = ".cogmap-sweep";
+inline constexpr const char* kSweepMarkerText =
+    "cogmap sweep output directory: its results files and plots/ are replaced by the next sweep "
+    "or --merge\n";
 
 /// An output directory a sweep or a merge must not write: not a directory, or it holds a
 /// results file or plots no sweep wrote. The message names the path and what to do instead.
