@@ -12,6 +12,11 @@ using mapper::Point2;
 
 // Caps the bucket array so a stray far-away segment cannot make the index huge.
 constexpr double kMaxCells = 4.0e6;
+// Segments per cell the cell size aims at, on average over the segments' bounding box: a world
+// crowded with small obstacles (each circle is 48 facets) gets smaller cells, so a sight line
+// tests tens of segments per cell, not thousands. Ordinary buildings have far fewer segments
+// than their area in cells of the given size, and keep it.
+constexpr double kSegmentsPerCell = 8.0;
 
 using mapper::cross;
 
@@ -54,6 +59,10 @@ SegmentIndex::SegmentIndex(std::span<const mapper::Segment> segments, double cel
     max_y = std::max({max_y, s.a.y(), s.b.y()});
   }
   const double span_x = max_x - min_x, span_y = max_y - min_y;
+  const double crowded_cell_m =
+      std::sqrt(kSegmentsPerCell * (span_x + cell_m_) * (span_y + cell_m_) /
+                static_cast<double>(segments_.size()));
+  cell_m_ = std::min(cell_m_, crowded_cell_m);
   if ((span_x / cell_m_ + 2.0) * (span_y / cell_m_ + 2.0) > kMaxCells) {
     cell_m_ = std::sqrt((span_x + 2.0) * (span_y + 2.0) / kMaxCells) + cell_m_;
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <utility>
 
 namespace cogmap::sim::sonar_detail {
 namespace {
@@ -23,6 +25,10 @@ constexpr double kAheadRatio = 1e-3;
 // ~1e-16, the test itself decides only within that, so nothing it could accept is skipped.
 constexpr double kTanSlack = 1e-9;
 constexpr double kAll = std::numeric_limits<double>::infinity();
+// A fan with fewer surfaces than this is scanned whole (cutting it would cost more than it saves);
+// a crowded one is cut into kSectors sectors of equal angle.
+constexpr std::size_t kSectorMinSurfaces = 64;
+constexpr int kSectors = 32;
 
 }  // namespace
 
@@ -88,7 +94,55 @@ void FanSurfaces::gather(const SceneIndex& index, const Point2& origin, const Po
   }
   std::sort(surfaces_.begin(), surfaces_.end(),
             [](const Near& x, const Near& y) { return x.distance_sq < y.distance_sq; });
+  build_sectors(cos_half, sin_half);
   index.corners_in_box(lo, hi, corners_);
+}
+
+int FanSurfaces::sector_of(double t) const {
+  return static_cast<int>(std::upper_bound(sector_edges_.begin(), sector_edges_.end(), t) -
+                          sector_edges_.begin());
+}
+
+void FanSurfaces::build_sectors(double cos_half, double sin_half) {
+  sector_edges_.clear();
+  sector_start_.clear();
+  sector_items_.clear();
+  if (surfaces_.size() < kSectorMinSurfaces) return;
+  // Inner edges at equal angles; only their order matters for correctness (sector_of is a
+  // count of edges at or below t, so it is monotone whatever their rounding).
+  const double half = std::atan2(sin_half, cos_half);
+  for (int k = 1; k < kSectors; ++k) {
+    sector_edges_.push_back(std::tan(-half + 2.0 * half * k / kSectors));
+  }
+  sector_start_.assign(kSectors + 1, 0);
+  const auto span_of = [&](const Near& n) {
+    return std::pair(sector_of(n.tan_lo), sector_of(n.tan_hi));
+  };
+  for (const Near& n : surfaces_) {
+    const auto [first, last] = span_of(n);
+    for (int k = first; k <= last; ++k) ++sector_start_[static_cast<std::size_t>(k) + 1];
+  }
+  for (int k = 0; k < kSectors; ++k) {
+    sector_start_[static_cast<std::size_t>(k) + 1] += sector_start_[static_cast<std::size_t>(k)];
+  }
+  sector_items_.resize(static_cast<std::size_t>(sector_start_.back()));
+  std::vector<int> fill(sector_start_.begin(), sector_start_.end() - 1);
+  // Surfaces in distance order, so every sector's list is nearest first too; copied, so a ray
+  // reads its sector's list in one sweep of memory.
+  for (const Near& n : surfaces_) {
+    const auto [first, last] = span_of(n);
+    for (int k = first; k <= last; ++k) {
+      sector_items_[static_cast<std::size_t>(fill[static_cast<std::size_t>(k)]++)] = n;
+    }
+  }
+}
+
+std::span<const FanSurfaces::Near> FanSurfaces::sector_list(double t) const {
+  if (sector_start_.empty() || std::isnan(t)) return {};
+  const auto k = static_cast<std::size_t>(sector_of(t));
+  return std::span<const Near>(sector_items_)
+      .subspan(static_cast<std::size_t>(sector_start_[k]),
+               static_cast<std::size_t>(sector_start_[k + 1] - sector_start_[k]));
 }
 
 std::optional<RayHit> FanSurfaces::first_hit(const Point2& dir, double max_t_m) const {
@@ -97,11 +151,21 @@ std::optional<RayHit> FanSurfaces::first_hit(const Point2& dir, double max_t_m) 
   double within_sq = (best_t + kNearSlackM) * (best_t + kNearSlackM);
   const double tan_dir = tangent_of(dir);
   const bool ahead = !std::isnan(tan_dir);
-  for (const Near& n : surfaces_) {
-    if (n.distance_sq > within_sq) break;
-    if (ahead && (tan_dir < n.tan_lo || tan_dir > n.tan_hi)) continue;
+  const auto visit = [&](const Near& n) {
+    if (n.distance_sq > within_sq) return false;
+    if (ahead && (tan_dir < n.tan_lo || tan_dir > n.tan_hi)) return true;
     if (test_surface(*scene_, n.surface, origin_, dir, best_t, best_i)) {
       within_sq = (best_t + kNearSlackM) * (best_t + kNearSlackM);
+    }
+    return true;
+  };
+  if (!sector_start_.empty() && ahead) {
+    for (const Near& n : sector_list(tan_dir)) {
+      if (!visit(n)) break;
+    }
+  } else {
+    for (const Near& n : surfaces_) {
+      if (!visit(n)) break;
     }
   }
   return finish_hit(*scene_, origin_, dir, best_t, best_i);
@@ -113,10 +177,22 @@ bool FanSurfaces::blocked(const Point2& dir, double reach_m) const {
   const double within_sq = (reach_m + kNearSlackM) * (reach_m + kNearSlackM);
   const double tan_dir = tangent_of(dir);
   const bool ahead = !std::isnan(tan_dir);
+  // 1: a hit, 0: beyond reach, -1: go on.
+  const auto visit = [&](const Near& n) {
+    if (n.distance_sq > within_sq) return 0;
+    if (ahead && (tan_dir < n.tan_lo || tan_dir > n.tan_hi)) return -1;
+    return test_surface(*scene_, n.surface, origin_, dir, best_t, best_i) ? 1 : -1;
+  };
+  if (!sector_start_.empty() && ahead) {
+    for (const Near& n : sector_list(tan_dir)) {
+      const int r = visit(n);
+      if (r >= 0) return r == 1;
+    }
+    return false;
+  }
   for (const Near& n : surfaces_) {
-    if (n.distance_sq > within_sq) return false;
-    if (ahead && (tan_dir < n.tan_lo || tan_dir > n.tan_hi)) continue;
-    if (test_surface(*scene_, n.surface, origin_, dir, best_t, best_i)) return true;
+    const int r = visit(n);
+    if (r >= 0) return r == 1;
   }
   return false;
 }

@@ -6,7 +6,9 @@
 /// which keeps the nearest hit (ties to the higher index) whatever the order, so every answer is
 /// bit-identical to the full scan. A surface is also skipped by a ray outside the directions it
 /// spans as seen from the origin (within the fan, ahead of the origin, a segment is met only by
-/// the rays between its ends).
+/// the rays between its ends). A crowded fan (hundreds of chair legs) is also cut into sectors,
+/// each listing, nearest first, the surfaces whose directions reach into it, so a ray walks its
+/// own sector's list instead of every surface nearer than its hit.
 
 #include <cstddef>
 #include <optional>
@@ -40,6 +42,9 @@ class FanSurfaces {
   /// Every corner in the fan's box, ascending (the order of SonarScene::corners).
   std::span<const int> corners() const { return corners_; }
 
+  /// How many sectors the last gather cut the fan into (0: the fan is scanned whole).
+  std::size_t sector_count() const { return sector_start_.empty() ? 0 : sector_start_.size() - 1; }
+
  private:
   struct Near {
     double distance_sq;  // squared distance from the origin to the surface's nearest point
@@ -50,12 +55,26 @@ class FanSurfaces {
   };
   /// The tangent of unit `dir`'s angle from the axis; NaN when `dir` does not point ahead.
   double tangent_of(const mapper::Point2& dir) const;
+  /// The sector holding tangent `t` (monotone in t: a surface spanning [lo, hi] is listed in
+  /// every sector from sector_of(lo) to sector_of(hi)).
+  int sector_of(double t) const;
+  /// Cuts the gathered surfaces into sectors of equal angle over the fan's half width.
+  void build_sectors(double cos_half, double sin_half);
+  /// The surfaces a ray of tangent `t` must test, nearest first, or an empty span when the fan
+  /// is not cut (then every surface).
+  std::span<const Near> sector_list(double t) const;
   const SonarScene* scene_ = nullptr;
   mapper::Point2 origin_{0.0, 0.0};
   mapper::Point2 axis_{1.0, 0.0};
   std::vector<Near> surfaces_;  // by distance
   std::vector<int> corners_;
   std::vector<int> ids_;  // gathering scratch
+  // Sectors (empty when the fan holds few surfaces): the tangents of the inner sector edges,
+  // ascending, and per sector the range [sector_start_[k], sector_start_[k + 1]) of
+  // sector_items_ (copies of surfaces_, nearest first).
+  std::vector<double> sector_edges_;
+  std::vector<int> sector_start_;
+  std::vector<Near> sector_items_;
 };
 
 }  // namespace cogmap::sim::sonar_detail

@@ -9,8 +9,10 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "../world/world_test_support.h"
 #include "cogmap/sim/world_geometry.h"
 #include "cogmap/sim/world_spec.h"
 #include "shipped_worlds_test_support.h"
@@ -49,7 +51,7 @@ Point2 unit(double angle_rad) { return Point2(std::cos(angle_rad), std::sin(angl
 // exactly, evenly spaced rays) and the ones where rounding decides (exactly at surface ends in the
 // fan, along the axes), at random lengths.
 void expect_fan_matches_full_scan(const SonarScene& scene, std::uint64_t seed, int fans, int& hits,
-                                  int& blocked) {
+                                  int& blocked, int* cut_fans = nullptr) {
   const SceneIndex index(scene);
   const Bounds b = bounds_of(scene);
   std::mt19937_64 rng(seed);
@@ -67,6 +69,7 @@ void expect_fan_matches_full_scan(const SonarScene& scene, std::uint64_t seed, i
     const double half = widths_deg[k % 4] * std::numbers::pi / 180.0;
     const double reach = reaches_m[k % 3];
     fan.gather(index, origin, unit(axis), std::cos(half), std::sin(half), reach);
+    if (cut_fans != nullptr && fan.sector_count() > 0) ++*cut_fans;
     std::vector<Point2> dirs = {unit(axis - half), unit(axis + half), unit(axis)};
     for (int i = 0; i < 17; ++i) dirs.push_back(unit(axis - half + 2.0 * half * i / 16));
     const Point2 ax = unit(axis);
@@ -122,6 +125,39 @@ TEST(SonarFanSurfaces, RaysAndSightLinesMatchTheFullScanInEveryShippedWorld) {
     EXPECT_GT(hits, 1500) << hits;  // real hits were compared, not only misses
     EXPECT_EQ(blocked, hits);
   }
+}
+
+TEST(SonarFanSurfaces, ACrowdedFanCutIntoSectorsMatchesTheFullScan) {
+  // A 6 x 6 m room holding 60 chair legs and 20 small boxes at random: fans over a few hundred
+  // surfaces are cut into sectors, and every ray and sight line must still answer as the full
+  // scan does (rays between the legs, exactly at facet ends, and along the axes).
+  std::mt19937_64 rng(57);
+  std::uniform_real_distribution<double> place(0.3, 5.7), angle(0.0, 180.0);
+  std::string text =
+      "name: crowded\nwalls:\n  polylines:\n    - [[0, 0], [6, 0], [6, 6], [0, 6], [0, 0]]\n"
+      "obstacles:\n";
+  // Everything at least 1.2 m from the start corner, where the robot stands.
+  const auto center = [&] {
+    double x = 0.0, y = 0.0;
+    do {
+      x = place(rng), y = place(rng);
+    } while (x < 1.2 && y < 1.2);
+    return "[" + std::to_string(x) + ", " + std::to_string(y) + "]";
+  };
+  for (int i = 0; i < 60; ++i) {
+    text += "  - {circle: {center: " + center() + ", radius_m: 0.02}}\n";
+  }
+  for (int i = 0; i < 20; ++i) {
+    text += "  - {box: {center: " + center() +
+            ", size: [0.3, 0.2], angle_deg: " + std::to_string(angle(rng)) + "}}\n";
+  }
+  text += "start: {x_m: 0.5, y_m: 0.5, theta_deg: 0}\n";
+  const WorldSpec world = sim::testing::parse(text);
+  int hits = 0, blocked = 0, cut = 0;
+  expect_fan_matches_full_scan(surface_segments(world), 58, 48, hits, blocked, &cut);
+  EXPECT_GE(cut, 20) << cut;  // 25 of the 32 fans reaching 5 or 12 m took the sector path
+  EXPECT_GT(hits, 15000) << hits;  // 23 244
+  EXPECT_EQ(blocked, hits);
 }
 
 TEST(SonarFanSurfaces, OnlySurfacesAheadWithinTheFanAreTested) {

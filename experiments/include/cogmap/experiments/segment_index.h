@@ -17,12 +17,16 @@ class SegmentIndex {
   /// Sentinel for "exclude no segment".
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
-  /// Indexes `segments` (world frame, metres) in square cells of about `cell_m` metres (grown
-  /// when the world is so large that the cell count would exceed a few million).
+  /// Indexes `segments` (world frame, metres) in square cells of about `cell_m` metres (shrunk
+  /// where the segments are so many that a cell would hold more than about eight on average;
+  /// grown when the world is so large that the cell count would exceed a few million). The
+  /// cell size changes only the speed: every query answers as a brute-force scan would.
   explicit SegmentIndex(std::span<const mapper::Segment> segments, double cell_m = 0.5);
 
   const std::vector<mapper::Segment>& segments() const { return segments_; }
   bool empty() const { return segments_.empty(); }
+  /// The side of the cells, metres (see the constructor).
+  double cell_m() const { return cell_m_; }
 
   /// Distance from `p` to the nearest segment, metres; +infinity when the index is empty.
   double nearest_distance_m(const mapper::Point2& p) const;
