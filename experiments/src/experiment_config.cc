@@ -166,7 +166,7 @@ bool key_within(const std::string& inner, const std::string& outer) {
 
 // An override as the user typed it, on one line and printable: a value may hold newlines,
 // control characters or bytes that are not UTF-8, which a terminal would garble.
-std::string shown(const std::string& override_text) {
+std::string printable(const std::string& override_text) {
   const bool utf8 = yaml::invalid_utf8_at(override_text) == std::string_view::npos;
   std::string out;
   for (const char ch : override_text) {
@@ -180,7 +180,22 @@ std::string shown(const std::string& override_text) {
       out += ch;
     }
   }
-  return "(from --set " + out + ")";
+  return out;
+}
+
+std::string shown(const std::string& override_text) {
+  return "(from --set " + printable(override_text) + ")";
+}
+
+// Every override, for an error none of them wrote but which they may have caused: a file key
+// that another key's new value makes invalid (`--set controller.type=explore` against a
+// route's `waypoints`) is reported at the file's line, which looks right on its own.
+std::string applied(const std::vector<std::string>& overrides) {
+  std::string out;
+  for (const std::string& o : overrides) {
+    out += (out.empty() ? "(with --set " : ", --set ") + printable(o);
+  }
+  return out + ")";
 }
 
 // The override an error at `key` comes from, and whether the error lies in the value it wrote
@@ -205,11 +220,15 @@ Cause override_of(const std::string& key, const std::vector<std::string>& overri
 
 // Re-raises an error caused by a --set override so it also says which override did it, at the
 // line of the key it overrides. The value's own nodes carry lines of the value's text (always
-// 1), and the parents it created none: those would point at the wrong line of the file.
+// 1), and the parents it created none: those would point at the wrong line of the file. An
+// error at a key no override touched keeps its place and lists the overrides applied.
 [[noreturn]] void rethrow_with_override(const ConfigError& e, const YAML::Node& root,
                                         const std::vector<std::string>& overrides) {
   const Cause cause = override_of(e.key(), overrides);
-  if (!cause.override_text) throw e;
+  if (!cause.override_text) {
+    if (overrides.empty()) throw e;
+    throw ConfigError(e.file(), e.line(), e.key(), bare_message(e) + " " + applied(overrides));
+  }
   const std::string& o = *cause.override_text;
   int line = e.line();
   if (cause.in_value) {
