@@ -155,7 +155,7 @@ TEST(SonarFanSurfaces, ACrowdedFanCutIntoSectorsMatchesTheFullScan) {
   const WorldSpec world = sim::testing::parse(text);
   int hits = 0, blocked = 0, cut = 0;
   expect_fan_matches_full_scan(surface_segments(world), 58, 48, hits, blocked, &cut);
-  EXPECT_GE(cut, 20) << cut;  // 25 of the 32 fans reaching 5 or 12 m took the sector path
+  EXPECT_GE(cut, 20) << cut;       // 25 of the 32 fans reaching 5 or 12 m took the sector path
   EXPECT_GT(hits, 15000) << hits;  // 23 244
   EXPECT_EQ(blocked, hits);
 }
