@@ -126,19 +126,18 @@ void FanSurfaces::build_sectors(double cos_half, double sin_half) {
     sector_start_[static_cast<std::size_t>(k) + 1] += sector_start_[static_cast<std::size_t>(k)];
   }
   sector_items_.resize(static_cast<std::size_t>(sector_start_.back()));
-  std::vector<int> fill(sector_start_.begin(), sector_start_.end() - 1);
+  sector_fill_.assign(sector_start_.begin(), sector_start_.end() - 1);
   // Surfaces in distance order, so every sector's list is nearest first too; copied, so a ray
   // reads its sector's list in one sweep of memory.
   for (const Near& n : surfaces_) {
     const auto [first, last] = span_of(n);
     for (int k = first; k <= last; ++k) {
-      sector_items_[static_cast<std::size_t>(fill[static_cast<std::size_t>(k)]++)] = n;
+      sector_items_[static_cast<std::size_t>(sector_fill_[static_cast<std::size_t>(k)]++)] = n;
     }
   }
 }
 
 std::span<const FanSurfaces::Near> FanSurfaces::sector_list(double t) const {
-  if (sector_start_.empty() || std::isnan(t)) return {};
   const auto k = static_cast<std::size_t>(sector_of(t));
   return std::span<const Near>(sector_items_)
       .subspan(static_cast<std::size_t>(sector_start_[k]),

@@ -60,8 +60,8 @@ class FanSurfaces {
   int sector_of(double t) const;
   /// Cuts the gathered surfaces into sectors of equal angle over the fan's half width.
   void build_sectors(double cos_half, double sin_half);
-  /// The surfaces a ray of tangent `t` must test, nearest first, or an empty span when the fan
-  /// is not cut (then every surface).
+  /// The surfaces a ray of tangent `t` (not NaN) must test, nearest first; only for a fan that
+  /// is cut (sector_count() > 0).
   std::span<const Near> sector_list(double t) const;
   const SonarScene* scene_ = nullptr;
   mapper::Point2 origin_{0.0, 0.0};
@@ -75,6 +75,7 @@ class FanSurfaces {
   std::vector<double> sector_edges_;
   std::vector<int> sector_start_;
   std::vector<Near> sector_items_;
+  std::vector<int> sector_fill_;  // building scratch, kept so a ping allocates nothing
 };
 
 }  // namespace cogmap::sim::sonar_detail
