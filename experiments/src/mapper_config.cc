@@ -48,6 +48,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "em_clutter_weight",
                      "em_weight_by_length",
                      "em_min_direction_sigma_deg",
+                     "em_measurement_sd_deg_m",
                      "em_echo_refit_band_m",
                      "em_echo_refit_min_echoes",
                      "em_echo_refit_max_turn_deg",
@@ -181,6 +182,12 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.localizer.min_direction_sigma_rad =
       number_in(block, "em_min_direction_sigma_deg", 0.0, 45.0,
                 o.localizer.min_direction_sigma_rad * 180.0 / std::numbers::pi) *
+      std::numbers::pi / 180.0;
+  // A room's measurement is as sharp as its longest wall (docs/algorithms.md, "A room's
+  // measurement is as sharp as its longest wall"); 0 = the sd EM's mixture claims.
+  o.localizer.measurement_sd_rad_m =
+      number_in(block, "em_measurement_sd_deg_m", 0.0, 100.0,
+                o.localizer.measurement_sd_rad_m * 180.0 / std::numbers::pi) *
       std::numbers::pi / 180.0;
   o.localizer.echo_refit.band_m =
       number_in(block, "em_echo_refit_band_m", 0.0, 1.0, o.localizer.echo_refit.band_m);

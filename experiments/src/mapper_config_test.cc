@@ -130,6 +130,14 @@ TEST(MapperConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_NEAR(
       load_experiment(p, {"mapper.em_reference_bin_deg=0.01"}).mapper.localizer.reference_bin_rad,
       0.01 * std::numbers::pi / 180.0, 1e-18);
+  // A room's measurement sd from its longest wall: EM's own sd (0) unless set, in degrees·m.
+  EXPECT_EQ(defaults.mapper.localizer.measurement_sd_rad_m, 0.0);
+  EXPECT_NEAR(load_experiment(p, {"mapper.em_measurement_sd_deg_m=4.4"})
+                  .mapper.localizer.measurement_sd_rad_m,
+              4.4 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_NE(error_of(p, {"mapper.em_measurement_sd_deg_m=-1"}).find("em_measurement_sd_deg_m"),
+            std::string::npos);
+  EXPECT_NE(error_of(p, {"mapper.em_measurement_sd_deg_m=nan"}), "no error");
   // The skid-steer's curvature gain: the odometry as reported unless set; at most ±0.5.
   EXPECT_EQ(defaults.mapper.odometry_calibration.curvature_gain, 0.0);
   EXPECT_DOUBLE_EQ(load_experiment(p, {"mapper.odometry_curvature_gain=0.066"})

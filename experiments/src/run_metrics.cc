@@ -111,6 +111,7 @@ RoomLocalizationReport room_localization_report(const mapper::Localization& l) {
   RoomLocalizationReport r;
   r.measured_rotation_deg = l.measured_rotation_rad * kDegPerRad;
   r.measurement_sd_deg = l.measurement_sigma_rad * kDegPerRad;
+  r.longest_wall_m = l.longest_wall_m;
   if (std::isfinite(l.prior_sigma_rad)) r.prior_sd_deg = l.prior_sigma_rad * kDegPerRad;
   r.gain = l.gain;
   r.applied = l.applied;
@@ -205,6 +206,7 @@ std::string metrics_json_text(const RunMetrics& m) {
       const RoomLocalizationReport& l = *r.localization;
       localization = {{"measured_rotation_deg", l.measured_rotation_deg},
                       {"measurement_sd_deg", l.measurement_sd_deg},
+                      {"longest_wall_m", l.longest_wall_m},
                       {"prior_sd_deg", opt(l.prior_sd_deg)},
                       {"gain", l.gain},
                       {"applied", l.applied}};

@@ -201,7 +201,9 @@ TEST(RunMetrics, EachRoomSaysWhatEmMeasuredInDegrees) {
   fix.prior_sigma_rad = 0.04;
   fix.gain = 0.8;
   fix.applied = true;
+  fix.longest_wall_m = 2.75;
   const RoomLocalizationReport r = room_localization_report(fix);
+  EXPECT_EQ(r.longest_wall_m, 2.75);
   EXPECT_NEAR(r.measured_rotation_deg, -0.1 * 180.0 / M_PI, 1e-12);
   EXPECT_NEAR(r.measurement_sd_deg, 0.02 * 180.0 / M_PI, 1e-12);
   ASSERT_TRUE(r.prior_sd_deg.has_value());
@@ -218,6 +220,7 @@ TEST(RunMetrics, EachRoomSaysWhatEmMeasuredInDegrees) {
   const auto& l = j["rooms"][1]["localization"];
   EXPECT_DOUBLE_EQ(l["measured_rotation_deg"].get<double>(), r.measured_rotation_deg);
   EXPECT_DOUBLE_EQ(l["measurement_sd_deg"].get<double>(), r.measurement_sd_deg);
+  EXPECT_DOUBLE_EQ(l["longest_wall_m"].get<double>(), 2.75);
   EXPECT_DOUBLE_EQ(l["prior_sd_deg"].get<double>(), *r.prior_sd_deg);
   EXPECT_DOUBLE_EQ(l["gain"].get<double>(), 0.8);
   EXPECT_TRUE(l["applied"].get<bool>());

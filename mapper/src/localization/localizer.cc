@@ -182,12 +182,18 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
   std::fill_n(own.begin(), s.size(), EmSource::kS);
   const bool has_prior = std::isfinite(prior.sigma_rad);
   const double var_prior = prior.sigma_rad * prior.sigma_rad;
-  const double var_meas =
-      mean_variance(samples, weights, weight_sq, own, EmSource::kS, out.em.mixture,
-                    em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
-      mean_variance(samples, weights, weight_sq, own, EmSource::kM, out.em.mixture,
-                    em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
-      (has_prior && options_.smear_variance ? var_prior / 3.0 : 0.0);
+  for (const LineDirection& d : s) out.longest_wall_m = std::max(out.longest_wall_m, d.length_m);
+  double var_em = mean_variance(samples, weights, weight_sq, own, EmSource::kS, out.em.mixture,
+                                em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
+                  mean_variance(samples, weights, weight_sq, own, EmSource::kM, out.em.mixture,
+                                em_options.clutter_range_rad, options_.min_direction_sigma_rad);
+  // A room is measured as sharply as its longest wall allows, whatever EM's count of pieces
+  // claims (the option's comment). A mixture EM could not bound stays unbounded.
+  if (options_.measurement_sd_rad_m > 0.0 && std::isfinite(var_em)) {
+    const double sd = options_.measurement_sd_rad_m / out.longest_wall_m;
+    var_em = sd * sd;
+  }
+  const double var_meas = var_em + (has_prior && options_.smear_variance ? var_prior / 3.0 : 0.0);
   out.measurement_sigma_rad = std::sqrt(var_meas);
 
   // Posterior of the rotation given the odometry prior N(0, prior²) and the EM measurement

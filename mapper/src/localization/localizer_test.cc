@@ -144,6 +144,54 @@ TEST(Localizer, ABinnedReferenceMeasuresWhatTheWholeReferenceDoes) {
   }
 }
 
+TEST(Localizer, AMeasurementAsSharpAsItsLongestWall) {
+  // A room of three exact walls, the longest 2.5 m, drifted by 3° against a square reference:
+  // with measurement_sd_rad_m the sd is k / 2.5 m, plus a third of the prior's variance when a
+  // prior is given, whatever EM's count of pieces says; the longest piece is reported either way.
+  const std::vector<Polyline> reference{
+      {Point2{0, 0}, Point2{5, 0}, Point2{5, 5}, Point2{0, 5}, Point2{0, 0}}};
+  const double c = std::cos(3.0 * kDeg), s = std::sin(3.0 * kDeg);
+  const auto turned = [&](double x, double y) { return Point2{c * x - s * y, s * x + c * y}; };
+  const std::vector<Polyline> current{{turned(0, 0), turned(2.5, 0), turned(2.5, 1.5)},
+                                      {turned(1, 3), turned(1, 4.2)}};
+  LocalizerOptions own;
+  LocalizerOptions by_wall;
+  by_wall.measurement_sd_rad_m = 0.077;
+  const Localization a = Localizer(own).estimate(reference, current);
+  const Localization b = Localizer(by_wall).estimate(reference, current);
+  EXPECT_DOUBLE_EQ(a.longest_wall_m, 2.5);
+  EXPECT_DOUBLE_EQ(b.longest_wall_m, 2.5);
+  EXPECT_NEAR(b.measured_rotation_rad, -3.0 * kDeg, 1e-6);
+  EXPECT_EQ(b.measured_rotation_rad, a.measured_rotation_rad);  // only the sd changes
+  EXPECT_NEAR(b.measurement_sigma_rad, 0.077 / 2.5, 1e-12);
+  EXPECT_GT(std::abs(a.measurement_sigma_rad - b.measurement_sigma_rad), 1e-3);
+
+  const RotationPrior prior{2.0 * kDeg};
+  const Localization p = Localizer(by_wall).estimate(reference, current, prior);
+  const double var_meas = std::pow(0.077 / 2.5, 2) + std::pow(2.0 * kDeg, 2) / 3.0;
+  EXPECT_NEAR(p.measurement_sigma_rad, std::sqrt(var_meas), 1e-12);
+  const double var_prior = std::pow(2.0 * kDeg, 2);
+  EXPECT_NEAR(p.gain, var_prior / (var_prior + var_meas), 1e-12);
+  ASSERT_TRUE(p.applied);
+  EXPECT_NEAR(p.rotation_rad, p.gain * p.measured_rotation_rad, 1e-15);
+
+  // The same room with its walls broken into 0.5 m pieces is measured five times less sharply.
+  std::vector<Polyline> broken;
+  for (const Polyline& line : current) {
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      const int pieces = static_cast<int>(std::ceil((line[i] - line[i - 1]).norm() / 0.5 - 1e-9));
+      for (int k = 0; k < pieces; ++k) {
+        const Point2 from = line[i - 1] + (line[i] - line[i - 1]) * (double(k) / pieces);
+        const Point2 to = line[i - 1] + (line[i] - line[i - 1]) * (double(k + 1) / pieces);
+        broken.push_back({from, to});
+      }
+    }
+  }
+  const Localization q = Localizer(by_wall).estimate(reference, broken);
+  EXPECT_NEAR(q.longest_wall_m, 0.5, 1e-9);
+  EXPECT_NEAR(q.measurement_sigma_rad, 0.077 / 0.5, 1e-9);
+}
+
 TEST(Localizer, IsDeterministic) {
   const Trial a = run(7.0, 10.0, 99), b = run(7.0, 10.0, 99);
   EXPECT_EQ(a.result.rotation_rad, b.result.rotation_rad);

@@ -24,6 +24,7 @@ namespace cogmap::experiments {
 struct RoomLocalizationReport {
   double measured_rotation_deg = 0.0;  ///< EM's answer before the prior
   double measurement_sd_deg = 0.0;     ///< the sd EM claims for it
+  double longest_wall_m = 0.0;         ///< the room's longest straight piece of wall
   std::optional<double> prior_sd_deg;  ///< odometry's prior on the rotation (none: no prior)
   double gain = 0.0;                   ///< the share of the measurement applied
   bool applied = false;                ///< false: too little wall, too big, or gated out
