@@ -15,6 +15,7 @@ mapper::MapperOptions refined() {
   o.translation.moves_estimate = true;
   o.localizer.echo_refit.band_m = 0.12;
   o.localizer.echo_refit.min_echoes = 40;
+  o.localizer.measurement_sd_rad_m = 0.077;
   o.translation.max_offset_m = 0.7;
   o.max_room_travel_m = 4.5;
   o.builder.occupied_threshold = 5.0;
@@ -34,6 +35,7 @@ TEST(PlainMapperOptions, TheMapOnlyRefinementsGoBackToTheLibrarysDefaults) {
   EXPECT_EQ(plain.localizer.echo_refit.band_m, library.localizer.echo_refit.band_m);
   EXPECT_EQ(plain.localizer.echo_refit.min_echoes, library.localizer.echo_refit.min_echoes);
   EXPECT_EQ(plain.localizer.echo_refit.band_m, 0.0);
+  EXPECT_EQ(plain.localizer.measurement_sd_rad_m, 0.0);  // the steering keeps EM's own sd
   EXPECT_FALSE(plain.scan_match.enabled);
   EXPECT_FALSE(plain.glimpse.enabled);
   EXPECT_FALSE(plain.translation.moves_estimate);
@@ -68,6 +70,9 @@ TEST(PlainMapperOptions, EachRefinementCountsAndNothingElseDoes) {
   EXPECT_TRUE(has_map_only_refinements(o));
   o = library;
   o.localizer.echo_refit.band_m = 0.12;
+  EXPECT_TRUE(has_map_only_refinements(o));
+  o = library;
+  o.localizer.measurement_sd_rad_m = 0.077;
   EXPECT_TRUE(has_map_only_refinements(o));
   // A switched-off matcher's settings, and what both mappers share, are no refinement.
   o = library;

@@ -9,8 +9,9 @@
 namespace cogmap::experiments {
 
 /// `map` with scan matching, glimpses, the odometry's curvature recalibration, the
-/// translation's move of the estimate and EM's wall directions from the echoes
-/// (`localizer.echo_refit`) as `mapper::MapperOptions{}` has them; everything else
+/// translation's move of the estimate, EM's wall directions from the echoes
+/// (`localizer.echo_refit`) and its sd from the longest wall (`localizer.measurement_sd_rad_m`)
+/// as `mapper::MapperOptions{}` has them; everything else
 /// (grid, boundaries, EM, the cuts, door fixes, held turns) as `map` says, since those decide
 /// when rooms end and what EM corrects.
 mapper::MapperOptions plain_mapper_options(const mapper::MapperOptions& map);
