@@ -101,6 +101,7 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
   const std::vector<LineDirection> s = line_directions(current_world);
   const std::vector<LineDirection> m_lines = line_directions(reference_world);
   const double length_s_m = total_length_m(s), length_m_m = total_length_m(m_lines);
+  for (const LineDirection& d : s) out.longest_wall_m = std::max(out.longest_wall_m, d.length_m);
   if (length_s_m < options_.min_wall_length_m || length_m_m < options_.min_wall_length_m) {
     return out;
   }
@@ -182,7 +183,6 @@ Localization Localizer::estimate(std::span<const Polyline> reference_world,
   std::fill_n(own.begin(), s.size(), EmSource::kS);
   const bool has_prior = std::isfinite(prior.sigma_rad);
   const double var_prior = prior.sigma_rad * prior.sigma_rad;
-  for (const LineDirection& d : s) out.longest_wall_m = std::max(out.longest_wall_m, d.length_m);
   double var_em = mean_variance(samples, weights, weight_sq, own, EmSource::kS, out.em.mixture,
                                 em_options.clutter_range_rad, options_.min_direction_sigma_rad) +
                   mean_variance(samples, weights, weight_sq, own, EmSource::kM, out.em.mixture,

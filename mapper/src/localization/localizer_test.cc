@@ -107,6 +107,7 @@ TEST(Localizer, TooLittleWallIsNotApplied) {
   const Localization a = localizer.estimate(reference, short_walls);
   EXPECT_FALSE(a.applied);
   EXPECT_EQ(a.rotation_rad, 0.0);
+  EXPECT_NEAR(a.longest_wall_m, std::hypot(0.5, 0.05), 1e-12);  // reported all the same
   EXPECT_FALSE(localizer.estimate(short_walls, reference).applied);
   EXPECT_FALSE(localizer.estimate({}, reference).applied);
 }

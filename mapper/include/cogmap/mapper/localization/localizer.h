@@ -62,10 +62,11 @@ struct LocalizerOptions {
   /// term below, in place of the sd EM's mixture claims (σ/√n over its Kish count). Over 7 300
   /// rooms of four sets of buildings (docs/algorithms.md, "A room's measurement is as sharp as
   /// its longest wall") EM's own sd is about 2° whatever the room, while the error's median is
-  /// 5° with no piece of 0.8 m (chair arcs, desk faces) and under 1° with a 4 m wall; 0.077/L
-  /// matches that median within a quarter from 0.6 to 5 m. 0 (the default) = EM's own sd: on,
-  /// in both of an explorer's mappers it kept more labs' corrected heading within odometry's
-  /// but more explorations stopped short; in the map alone it changed no set beyond its spread.
+  /// 5° with no piece as long as 0.8 m (chair arcs, desk faces) and under 1° with a 4 m wall;
+  /// 0.077/L matches that median within a quarter from 0.6 to 5 m. 0 (the default) = EM's own
+  /// sd: on, in both of an explorer's mappers it kept more labs' corrected heading within
+  /// odometry's but more explorations stopped short; in the map alone it changed no set beyond
+  /// its spread.
   double measurement_sd_rad_m = 0.0;
   /// The walls of a room are seen at headings spread over the drift inside the room, so their
   /// mean direction matches the heading error at an unknown moment of the visit, not at its end:
