@@ -304,6 +304,60 @@ void check_obstacle_piles(const WorldSpec& world) {
   }
 }
 
+// Refuses a wall with a piece that overlaps or touches more than kMaxWallPile other pieces (the
+// obstacles' sweep over bounds, each pair of bounds that meet then held to the pieces' true
+// reach: centre lines nearer than their half thicknesses together, so that a long diagonal
+// wall's bounds, which meet every partition inside them, count only the walls it touches).
+void check_wall_piles(const WorldSpec& world) {
+  struct Piece {
+    Point2 a, b, lo, hi;
+    double half_m = 0.0;
+    std::size_t wall = 0;
+  };
+  std::vector<Piece> pieces;
+  for (std::size_t w = 0; w < world.walls.size(); ++w) {
+    const WallPolyline& wall = world.walls[w];
+    const double h = 0.5 * wall.thickness_m;
+    for (std::size_t k = 0; k + 1 < wall.points.size(); ++k) {
+      const Point2 a = wall.points[k], b = wall.points[k + 1];
+      pieces.push_back({a, b, a.cwiseMin(b) - Point2(h, h), a.cwiseMax(b) + Point2(h, h), h, w});
+    }
+  }
+  const std::size_t n = pieces.size();
+  if (n <= kMaxWallPile) return;
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::pair(pieces[a].lo.x(), a) < std::pair(pieces[b].lo.x(), b);
+  });
+  const auto touching = [](const Piece& p, const Piece& q) {
+    if (geom::segments_touch(p.a, p.b, q.a, q.b)) return true;
+    const mapper::Segment sp{p.a, p.b}, sq{q.a, q.b};
+    const double reach = p.half_m + q.half_m;
+    return mapper::distance_to_segment_m(p.a, sq) <= reach ||
+           mapper::distance_to_segment_m(p.b, sq) <= reach ||
+           mapper::distance_to_segment_m(q.a, sp) <= reach ||
+           mapper::distance_to_segment_m(q.b, sp) <= reach;
+  };
+  std::vector<std::size_t> overlaps(n, 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Piece& p = pieces[order[k]];
+    for (std::size_t m = k + 1; m < n && pieces[order[m]].lo.x() <= p.hi.x(); ++m) {
+      const Piece& q = pieces[order[m]];
+      if (q.lo.y() > p.hi.y() || q.hi.y() < p.lo.y() || !touching(p, q)) continue;
+      for (const std::size_t o : {order[k], order[m]}) {
+        if (++overlaps[o] <= kMaxWallPile) continue;
+        const SourceRef& ref = world.walls[pieces[o].wall].source;
+        throw yaml::ConfigError(world.file.string(), ref.line, ref.key,
+                                "a piece of this wall overlaps or touches more than " +
+                                    std::to_string(kMaxWallPile) +
+                                    " other wall pieces: a pile that is no building (its "
+                                    "surfaces and sight lines would take hours)");
+      }
+    }
+  }
+}
+
 void check_start(const WorldSpec& world, const WorldCheckOptions& options) {
   const Point2 p = world.start.translation();
   auto complain = [&](double d, const std::string& what, const SourceRef& ref) {
@@ -355,6 +409,7 @@ WorldSpec parse_world(const yaml::Node& root, const WorldCheckOptions& options) 
     }
   }
   check_obstacle_piles(world);
+  check_wall_piles(world);
   const yaml::Node start = root["start"];
   start.expect_keys({"x_m", "y_m", "theta_deg"});
   const auto theta = start.child("theta_deg");

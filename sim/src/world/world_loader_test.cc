@@ -113,6 +113,34 @@ TEST(WorldLoader, APileOfObstaclesIsRefusedAtItsLine) {
       << e.what();
 }
 
+// Walls laid over one another by the thousand (1 500 along one line took 226 s to load, since
+// 10.7 s; tens of thousands would not finish) are refused at the first wall whose piece touches
+// more than kMaxWallPile others; as many short walls apart load.
+TEST(WorldLoader, APileOfWallsIsRefusedAtItsLine) {
+  const auto world = [](bool piled) {
+    std::string text = kHeader;                           // walls[0] on line 4
+    for (std::size_t i = 0; i < kMaxWallPile + 2; ++i) {  // each touches all the others
+      const double d = static_cast<double>(i);
+      if (piled) {
+        text += "    - [[" + std::to_string(1 + 0.001 * d) + ", 3], [" +
+                std::to_string(6 + 0.001 * d) + ", 3]]\n";
+      } else {  // 0.1 m walls on a 0.3 m grid, clear of one another and of the room's walls
+        const double x = 0.3 + 0.3 * static_cast<double>(i % 32), y = 0.3 + 0.3 * (i / 32);
+        text += "    - [[" + std::to_string(x) + ", " + std::to_string(y) + "], [" +
+                std::to_string(x + 0.1) + ", " + std::to_string(y) + "]]\n";
+      }
+    }
+    return text + "start: {x_m: 9.5, y_m: 5.6}\n";
+  };
+  EXPECT_EQ(parse(world(false)).walls.size(), kMaxWallPile + 3);
+  const auto e = config_error_of_world(world(true));
+  // The first piled wall meets its 513th neighbour last: it is named.
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_NE(std::string(e.what()).find("touches more than 512 other wall pieces"),
+            std::string::npos)
+      << e.what();
+}
+
 TEST(WorldLoader, MissingKeyIsAnError) {
   const auto e = config_error_of_world(kHeader);
   EXPECT_NE(std::string(e.what()).find("missing required key 'start'"), std::string::npos);

@@ -37,6 +37,12 @@ inline constexpr double kMaxAngleDeg = 1e6;
 /// costs about the cube of the pile (3 000 boxes at one spot did not load in 30 s; 1 000 took
 /// 5.7 s; 64 take milliseconds).
 inline constexpr std::size_t kMaxObstaclePile = 64;
+/// Most wall pieces (one segment of a polyline, with its thickness) that any one piece may
+/// overlap or touch. A corridor's face meets one partition every few metres, so 512 is a
+/// corridor of a kilometre; walls laid over one another by the thousand load in about the
+/// square of their number and are then seen through the same cells by every sight line (1 500
+/// along one line 10.7 s, 3 000 58 s, tens of thousands would not finish).
+inline constexpr std::size_t kMaxWallPile = 512;
 
 /// An angle in degrees: a finite number within +/-kMaxAngleDeg, returned in radians (not
 /// wrapped). Throws yaml::ConfigError at `node` otherwise.
