@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "cogmap/sim/world_spec.h"
@@ -262,21 +263,17 @@ double signed_obstacle_distance_m(const Point2& p, const Obstacle& obstacle) {
   return geom::point_in_polygon(p, outline) ? -d : d;
 }
 
-// Refuses an obstacle whose bounds overlap more than kMaxObstaclePile others' (a sweep along x
-// over the bounds sorted by their lower x; it stops at the first pile found).
-void check_obstacle_piles(const WorldSpec& world) {
-  const std::size_t n = world.obstacles.size();
-  if (n <= kMaxObstaclePile) return;
-  std::vector<std::pair<Point2, Point2>> bounds(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Polyline outline = obstacle_outline(world.obstacles[i]);
-    Point2 lo = outline.front(), hi = outline.front();
-    for (const Point2& p : outline) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-    bounds[i] = {lo, hi};
-  }
+// Bounds of one element, lower then upper corner.
+using Bounds = std::pair<Point2, Point2>;
+
+// The first element found to meet more than `limit` others: a sweep along x over the bounds
+// sorted by their lower x, each pair whose bounds overlap then held to `meet(i, j)`; it stops
+// at the first pile found. None when there is no pile.
+template <class Meet>
+std::optional<std::size_t> first_pile(const std::vector<Bounds>& bounds, std::size_t limit,
+                                      const Meet& meet) {
+  const std::size_t n = bounds.size();
+  if (n <= limit) return std::nullopt;
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -288,49 +285,66 @@ void check_obstacle_piles(const WorldSpec& world) {
     for (std::size_t m = k + 1; m < n && bounds[order[m]].first.x() <= bounds[i].second.x(); ++m) {
       const std::size_t j = order[m];
       if (bounds[j].first.y() > bounds[i].second.y() ||
-          bounds[j].second.y() < bounds[i].first.y()) {
+          bounds[j].second.y() < bounds[i].first.y() || !meet(i, j)) {
         continue;
       }
       for (const std::size_t o : {i, j}) {
-        if (++overlaps[o] <= kMaxObstaclePile) continue;
-        const SourceRef& ref = world.obstacles[o].source;
-        throw yaml::ConfigError(world.file.string(), ref.line, ref.key,
-                                "its bounds overlap those of more than " +
-                                    std::to_string(kMaxObstaclePile) +
-                                    " other obstacles: a pile that is no building (turning it "
-                                    "into surfaces would cost the cube of its size)");
+        if (++overlaps[o] > limit) return o;
       }
     }
   }
+  return std::nullopt;
 }
 
-// Refuses a wall with a piece that overlaps or touches more than kMaxWallPile other pieces (the
-// obstacles' sweep over bounds, each pair of bounds that meet then held to the pieces' true
-// reach: centre lines nearer than their half thicknesses together, so that a long diagonal
-// wall's bounds, which meet every partition inside them, count only the walls it touches).
+// Refuses an obstacle whose bounds overlap more than kMaxObstaclePile others'.
+void check_obstacle_piles(const WorldSpec& world) {
+  const std::size_t n = world.obstacles.size();
+  if (n <= kMaxObstaclePile) return;
+  std::vector<Bounds> bounds(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Polyline outline = obstacle_outline(world.obstacles[i]);
+    Point2 lo = outline.front(), hi = outline.front();
+    for (const Point2& p : outline) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    bounds[i] = {lo, hi};
+  }
+  const auto pile =
+      first_pile(bounds, kMaxObstaclePile, [](std::size_t, std::size_t) { return true; });
+  if (!pile) return;
+  const SourceRef& ref = world.obstacles[*pile].source;
+  throw yaml::ConfigError(world.file.string(), ref.line, ref.key,
+                          "its bounds overlap those of more than " +
+                              std::to_string(kMaxObstaclePile) +
+                              " other obstacles: a pile that is no building (turning it "
+                              "into surfaces would cost the cube of its size)");
+}
+
+// Refuses a wall with a piece (one segment, with its thickness) that overlaps or touches more
+// than kMaxWallPile other pieces: pieces whose bounds meet are held to their true reach,
+// centre lines nearer than their half thicknesses together, so that a long diagonal wall's
+// bounds, which meet every partition inside them, count only the walls it touches.
 void check_wall_piles(const WorldSpec& world) {
   struct Piece {
-    Point2 a, b, lo, hi;
+    Point2 a, b;
     double half_m = 0.0;
     std::size_t wall = 0;
   };
   std::vector<Piece> pieces;
+  std::vector<Bounds> bounds;
   for (std::size_t w = 0; w < world.walls.size(); ++w) {
     const WallPolyline& wall = world.walls[w];
     const double h = 0.5 * wall.thickness_m;
     for (std::size_t k = 0; k + 1 < wall.points.size(); ++k) {
       const Point2 a = wall.points[k], b = wall.points[k + 1];
-      pieces.push_back({a, b, a.cwiseMin(b) - Point2(h, h), a.cwiseMax(b) + Point2(h, h), h, w});
+      pieces.push_back({a, b, h, w});
+      bounds.push_back({a.cwiseMin(b) - Point2(h, h), a.cwiseMax(b) + Point2(h, h)});
     }
   }
-  const std::size_t n = pieces.size();
-  if (n <= kMaxWallPile) return;
-  std::vector<std::size_t> order(n);
-  for (std::size_t i = 0; i < n; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::pair(pieces[a].lo.x(), a) < std::pair(pieces[b].lo.x(), b);
-  });
-  const auto touching = [](const Piece& p, const Piece& q) {
+  const auto touching = [&](std::size_t i, std::size_t j) {
+    const Piece& p = pieces[i];
+    const Piece& q = pieces[j];
     if (geom::segments_touch(p.a, p.b, q.a, q.b)) return true;
     const mapper::Segment sp{p.a, p.b}, sq{q.a, q.b};
     const double reach = p.half_m + q.half_m;
@@ -339,23 +353,14 @@ void check_wall_piles(const WorldSpec& world) {
            mapper::distance_to_segment_m(q.a, sp) <= reach ||
            mapper::distance_to_segment_m(q.b, sp) <= reach;
   };
-  std::vector<std::size_t> overlaps(n, 0);
-  for (std::size_t k = 0; k < n; ++k) {
-    const Piece& p = pieces[order[k]];
-    for (std::size_t m = k + 1; m < n && pieces[order[m]].lo.x() <= p.hi.x(); ++m) {
-      const Piece& q = pieces[order[m]];
-      if (q.lo.y() > p.hi.y() || q.hi.y() < p.lo.y() || !touching(p, q)) continue;
-      for (const std::size_t o : {order[k], order[m]}) {
-        if (++overlaps[o] <= kMaxWallPile) continue;
-        const SourceRef& ref = world.walls[pieces[o].wall].source;
-        throw yaml::ConfigError(world.file.string(), ref.line, ref.key,
-                                "a piece of this wall overlaps or touches more than " +
-                                    std::to_string(kMaxWallPile) +
-                                    " other wall pieces: a pile that is no building (its "
-                                    "surfaces and sight lines would take hours)");
-      }
-    }
-  }
+  const auto pile = first_pile(bounds, kMaxWallPile, touching);
+  if (!pile) return;
+  const SourceRef& ref = world.walls[pieces[*pile].wall].source;
+  throw yaml::ConfigError(world.file.string(), ref.line, ref.key,
+                          "a piece of this wall overlaps or touches more than " +
+                              std::to_string(kMaxWallPile) +
+                              " other wall pieces: a pile that is no building (its surfaces "
+                              "and sight lines would take hours)");
 }
 
 void check_start(const WorldSpec& world, const WorldCheckOptions& options) {
