@@ -224,8 +224,11 @@ class Coverage {
 };
 
 // The pieces' boxes sorted along the axis they spread most on, so that the pieces a box may
-// overlap are found by two binary searches instead of a pass over every piece: a world of n
-// pieces is clipped in ~n log n, not n² (a 60 000-point wall took minutes).
+// overlap are found by binary searches instead of a pass over every piece: a world of n pieces
+// is clipped in ~n log n, not n² (a 60 000-point wall took minutes). Boxes are grouped by their
+// length along that axis in powers of two, each group sorted on its own: a search looks back
+// only as far as its group's longest box, so one long outer wall does not make every search
+// scan every piece before it (a 38 000-point zig-zag inside a 41 m wall took 14 s).
 class PieceIndex {
  public:
   explicit PieceIndex(const std::vector<Box>& boxes) : boxes_(boxes) {
@@ -233,34 +236,49 @@ class PieceIndex {
     if (!boxes.empty()) all = boxes.front();
     for (const Box& b : boxes) all = {all.lo.cwiseMin(b.lo), all.hi.cwiseMax(b.hi)};
     axis_ = (all.hi - all.lo).x() >= (all.hi - all.lo).y() ? 0 : 1;
-    order_.resize(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) order_[i] = i;
-    std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
-      return std::pair(boxes[a].lo[axis_], a) < std::pair(boxes[b].lo[axis_], b);
-    });
-    for (const Box& b : boxes) longest_ = std::max(longest_, b.hi[axis_] - b.lo[axis_]);
+    std::map<int, Group> groups;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const double length = boxes[i].hi[axis_] - boxes[i].lo[axis_];
+      // ilogb: the power of two at or below the length; points (and NaN) share one group.
+      const int key = length > 0.0 ? std::ilogb(length) : std::numeric_limits<int>::min();
+      Group& g = groups[key];
+      g.order.push_back(i);
+      g.longest = std::max(g.longest, length);
+    }
+    for (auto& [key, g] : groups) {
+      std::sort(g.order.begin(), g.order.end(), [&](std::size_t a, std::size_t b) {
+        return std::pair(boxes[a].lo[axis_], a) < std::pair(boxes[b].lo[axis_], b);
+      });
+      groups_.push_back(std::move(g));
+    }
   }
 
   /// Indices (ascending) of the pieces whose box overlaps `box`.
   std::vector<std::size_t> overlapping(const Box& box) const {
-    // A box overlapping `box` starts at or before its end and no earlier than its start minus
-    // the longest box.
-    const double from = box.lo[axis_] - longest_, to = box.hi[axis_];
-    auto first = std::lower_bound(order_.begin(), order_.end(), from,
-                                  [&](std::size_t i, double v) { return boxes_[i].lo[axis_] < v; });
     std::vector<std::size_t> out;
-    for (auto it = first; it != order_.end() && boxes_[*it].lo[axis_] <= to; ++it) {
-      if (boxes_[*it].overlaps(box)) out.push_back(*it);
+    for (const Group& g : groups_) {
+      // A box overlapping `box` starts at or before its end and no earlier than its start
+      // minus the group's longest box.
+      const double from = box.lo[axis_] - g.longest, to = box.hi[axis_];
+      auto first =
+          std::lower_bound(g.order.begin(), g.order.end(), from,
+                           [&](std::size_t i, double v) { return boxes_[i].lo[axis_] < v; });
+      for (auto it = first; it != g.order.end() && boxes_[*it].lo[axis_] <= to; ++it) {
+        if (boxes_[*it].overlaps(box)) out.push_back(*it);
+      }
     }
     std::sort(out.begin(), out.end());
     return out;
   }
 
  private:
+  struct Group {
+    std::vector<std::size_t> order;  // by the boxes' start along the axis
+    double longest = 0.0;
+  };
   const std::vector<Box>& boxes_;
   int axis_ = 0;
-  double longest_ = 0.0;
-  std::vector<std::size_t> order_;
+  std::vector<Group> groups_;
 };
 
 // The parts of a candidate outside every other piece, in order along the candidate. A convex
