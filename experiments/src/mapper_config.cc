@@ -74,6 +74,8 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
                      "door_fix_drift_sd_per_m",
                      "relax",
                      "relax_wall_thickness_m",
+                     "relax_continuation_gap_m",
+                     "relax_continuation_angle_sd_deg",
                      "odometry_curvature_gain",
                      "held_turn"});
   mapper::MapperOptions o;
@@ -239,6 +241,16 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
   o.relaxation.enabled = block.get_or<bool>("relax", o.relaxation.enabled);
   o.relaxation.wall_thickness_m =
       number_in(block, "relax_wall_thickness_m", 0.0, 2.0, o.relaxation.wall_thickness_m);
+  // A wall line carried past a gap (0: never; 1 m, a door, was the default before 2026-12-08),
+  // and how well two pieces' directions agree (docs/algorithms.md, "Relaxing the rooms'
+  // positions"). A building spans at most the relaxation's 200 m.
+  o.relaxation.continuation_gap_m =
+      number_in(block, "relax_continuation_gap_m", 0.0, 200.0, o.relaxation.continuation_gap_m);
+  if (block.child("relax_continuation_angle_sd_deg")) {
+    o.relaxation.continuation_angle_sd_rad =
+        number_in(block, "relax_continuation_angle_sd_deg", 0.0, 45.0, 0.0) * std::numbers::pi /
+        180.0;
+  }
   // A skid-steer's arcs (docs/algorithms.md, "Odometry recalibrated for arcs"): a track that
   // changes by half either way is no skid-steer any more.
   o.odometry_calibration.curvature_gain =

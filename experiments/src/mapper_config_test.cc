@@ -115,6 +115,21 @@ TEST(MapperConfig, LocalisationExtensionsParseAndDefault) {
   EXPECT_DOUBLE_EQ(relaxed.mapper.relaxation.wall_thickness_m, 0.3);
   EXPECT_NE(error_of(p, {"mapper.relax_wall_thickness_m=-0.1"}), "no error");
   EXPECT_NE(error_of(p, {"mapper.relax=maybe"}), "no error");
+  // Wall lines carried 20 m past a gap, weaker by 0.04 rad a metre; the keys in metres and
+  // degrees, 0 allowed (no continuation; no weakening).
+  EXPECT_DOUBLE_EQ(defaults.mapper.relaxation.continuation_gap_m, 20.0);
+  EXPECT_DOUBLE_EQ(defaults.mapper.relaxation.continuation_angle_sd_rad, 0.04);
+  const Experiment lines = load_experiment(
+      p, {"mapper.relax_continuation_gap_m=1", "mapper.relax_continuation_angle_sd_deg=0"});
+  EXPECT_DOUBLE_EQ(lines.mapper.relaxation.continuation_gap_m, 1.0);
+  EXPECT_DOUBLE_EQ(lines.mapper.relaxation.continuation_angle_sd_rad, 0.0);
+  EXPECT_NEAR(load_experiment(p, {"mapper.relax_continuation_angle_sd_deg=3"})
+                  .mapper.relaxation.continuation_angle_sd_rad,
+              3.0 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_NE(error_of(p, {"mapper.relax_continuation_gap_m=-1"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.relax_continuation_gap_m=201"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.relax_continuation_angle_sd_deg=nan"}), "no error");
+  EXPECT_NE(error_of(p, {"mapper.relax_continuation_angle_sd_deg=46"}), "no error");
   // The reference's bins, in degrees: none unless set (every direction on its own).
   EXPECT_EQ(defaults.mapper.localizer.reference_bin_rad, 0.0);
   EXPECT_NEAR(

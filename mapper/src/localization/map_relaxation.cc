@@ -25,6 +25,7 @@ struct PairRow {
   double offset_m = 0.0;    ///< as measured with both rooms unshifted
   double residual_m = 0.0;  ///< left with the rooms where they stand now (thickness included)
   double overlap_m = 0.0;
+  double extrapolated_m = 0.0;  ///< how far past the earlier piece's end the offset was taken
   bool two_face = false;
 };
 
@@ -73,14 +74,16 @@ void pair_rooms(int i, int j, const RelaxationRoom& ri, const RelaxationRoom& rj
       double at = 0.5 * (lo + hi);  // where along r the offset is taken
       if (overlap < o.min_overlap_m) {
         // Collinear pieces of one wall line that do not overlap (consecutive cuts of a corridor,
-        // a wall's run on either side of a junction): the offset at c's end nearest to r, to
-        // r's line, weighed as continuation_weight_m of overlap.
+        // a wall's run on either side of a junction or along a corridor): the offset at c's end
+        // nearest to r, to r's line, weighed as continuation_weight_m of overlap and less the
+        // farther past r's end it lies (continuation_angle_sd_rad).
         if (!(o.continuation_gap_m > 0.0) || !same_side || overlap < -o.continuation_gap_m)
           continue;
         const double c_lo = std::min(s0, s1), c_hi = std::max(s0, s1);
         at = c_lo >= r_len ? c_lo : (c_hi <= 0.0 ? c_hi : 0.5 * (lo + hi));
         overlap = o.continuation_weight_m;
       }
+      const double extrapolated = at > r_len ? at - r_len : (at < 0.0 ? -at : 0.0);
       const Point2 p = ca + (at - s0) / (s1 - s0) * (cb - ca);
       // Along r's normal (towards where r was seen from): 0 for the same face, −thickness for
       // the face on the wall's other side.
@@ -88,8 +91,8 @@ void pair_rooms(int i, int j, const RelaxationRoom& ri, const RelaxationRoom& rj
       const double residual = same_side ? offset : offset - thickness_m;
       if (std::abs(residual) > gate) continue;
       // Measured as if both rooms stood unshifted: the rows are linear in the shifts.
-      candidates.push_back(
-          {i, j, r.normal, offset + r.normal.dot(si - sj), residual, overlap, !same_side});
+      candidates.push_back({i, j, r.normal, offset + r.normal.dot(si - sj), residual, overlap,
+                            extrapolated, !same_side});
     }
     if (candidates.empty()) continue;
     const auto best = std::min_element(candidates.begin(), candidates.end(),
@@ -195,7 +198,9 @@ Relaxation relax_room_positions(std::span<const RelaxationRoom> input, const Rel
       }
     }
     for (const PairRow& p : pairs) {
-      const double var = p.two_face ? pair_var_two : pair_var_same;
+      // An offset taken past the earlier piece's end carries both pieces' turn.
+      const double spread = p.extrapolated_m * o.continuation_angle_sd_rad;
+      const double var = (p.two_face ? pair_var_two : pair_var_same) + spread * spread;
       double w = p.overlap_m / var;
       const double sd = std::sqrt(var);
       if (round > 0 && std::abs(p.residual_m) > 2.0 * sd) w *= 2.0 * sd / std::abs(p.residual_m);

@@ -26,6 +26,7 @@ RelaxationOptions relaxation_options() {
   o.wall_thickness_sd_m = 0.08;
   o.continuation_gap_m = 1.0;
   o.continuation_weight_m = 0.5;
+  o.continuation_angle_sd_rad = 0.0;
   o.max_partners = 32;
   return o;
 }
@@ -102,6 +103,26 @@ TEST(MapRelaxation, TheNextRunOfAWallLineIsPairedAcrossAGap) {
   const std::vector<RelaxationRoom> other_side = {
       rooms[0], {{wall({4.6, 2.2}, {8.6, 2.2}, {0.0, 1.0})}, 50.0}};
   EXPECT_EQ(relax_room_positions(other_side, relaxation_options()).two_face_pairs, 0);
+}
+
+// A corridor's wall carried 10 m past the end of room 0's piece, 0.2 m too far north: paired
+// within a 20 m continuation gap, its offset (taken at the near end, 10 m out) weighed as 0.5 m
+// of overlap against 0.1² + (10 × 0.04)² m², 2.94 against the chain's 1/0.64; without the
+// angle's spread it would weigh 50, and within the old 1 m gap it is no pair at all.
+TEST(MapRelaxation, AWallLineCarriedFarPullsByWhatItsDirectionLeavesKnown) {
+  const std::vector<RelaxationRoom> rooms = {{{wall({0.0, 2.0}, {4.0, 2.0}, {0.0, -1.0})}, 5.0},
+                                             {{wall({14.0, 2.2}, {18.0, 2.2}, {0.0, -1.0})}, 50.0}};
+  RelaxationOptions o = relaxation_options();
+  o.continuation_gap_m = 20.0;
+  o.continuation_angle_sd_rad = 0.04;
+  const Relaxation r = relax_room_positions(rooms, o);
+  EXPECT_EQ(r.same_side_pairs, 1);
+  const double w_pair = 0.5 / (0.01 + 0.4 * 0.4), w_chain = 1.0 / 0.64;
+  EXPECT_NEAR(r.shifts[1].y(), -0.2 * w_pair / (w_pair + w_chain), 1e-9);
+  EXPECT_NEAR(r.shifts[1].x(), 0.0, 1e-9);
+  o.continuation_angle_sd_rad = 0.0;
+  EXPECT_NEAR(relax_room_positions(rooms, o).shifts[1].y(), -0.2 * 50.0 / (50.0 + w_chain), 1e-9);
+  EXPECT_EQ(relax_room_positions(rooms, relaxation_options()).same_side_pairs, 0);
 }
 
 // A robot that stays in one office cuts room after room on the same walls: each is paired

@@ -58,10 +58,19 @@ struct RelaxationOptions {
   int rounds = 5;  ///< pair, solve, re-pair with the rooms where the last solution put them
   /// Pieces on one line, seen from the same side, that do not overlap but end within this of
   /// each other pair too (0: never): a wall runs on past a door (0.8-1.2 m) on the same line,
-  /// and a corridor's consecutive cuts draw its walls end to end. Their offset is taken at the
-  /// nearer end and weighed as continuation_weight_m of overlap (an extrapolation).
-  double continuation_gap_m = 1.0;
+  /// a corridor's consecutive cuts draw its walls end to end, and a corridor's wall runs
+  /// straight for tens of metres past doors and junctions. Their offset is taken at the nearer
+  /// end and weighed as continuation_weight_m of overlap (an extrapolation). 20 m with the
+  /// angle sd below: measured against 1 (the default until 2026-12-08), 4, 10 and 40 m on
+  /// generated routes and explorations (docs/algorithms.md, "Relaxing the rooms' positions").
+  double continuation_gap_m = 20.0;
   double continuation_weight_m = 0.5;
+  /// How well the two pieces' directions agree, the turn between their rooms included: an
+  /// offset taken d metres past the earlier piece's end is uncertain by d × this more, so a
+  /// wall line carried across a long gap pulls weakly (0: as near as at the end). 0.04 rad,
+  /// 2.3°: EM leaves rooms 1-3° apart (max_angle_deg), and 0.02 rad pulled generated
+  /// explorations' walls apart where 0.04 did not.
+  double continuation_angle_sd_rad = 0.04;
   /// A room is paired with at most this many earlier rooms, the nearest (as EM's reference
   /// rooms): bounds the work and the problem's fill however long a run stays in one place.
   int max_partners = 32;
