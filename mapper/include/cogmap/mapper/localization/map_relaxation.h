@@ -68,8 +68,8 @@ struct RelaxationOptions {
   /// How well the two pieces' directions agree, the turn between their rooms included: an
   /// offset taken d metres past the earlier piece's end is uncertain by d × this more, so a
   /// wall line carried across a long gap pulls weakly (0: as near as at the end). 0.04 rad,
-  /// 2.3°: EM leaves rooms 1-3° apart (max_angle_deg), and 0.02 rad pulled generated
-  /// explorations' walls apart where 0.04 did not.
+  /// 2.3°: EM leaves rooms 1-3° apart, and 0.02 rad pulled generated explorations' walls onto
+  /// lines they were only nearly on where 0.04 did not (a desk's front along a wall).
   double continuation_angle_sd_rad = 0.04;
   /// A room is paired with at most this many earlier rooms, the nearest (as EM's reference
   /// rooms): bounds the work and the problem's fill however long a run stays in one place.
