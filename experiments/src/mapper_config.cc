@@ -243,7 +243,7 @@ mapper::MapperOptions parse_mapper_options(const Node& block) {
       number_in(block, "relax_wall_thickness_m", 0.0, 2.0, o.relaxation.wall_thickness_m);
   // A wall line carried past a gap (0: never; 1 m, a door, was the default before 2026-12-08),
   // and how well two pieces' directions agree (docs/algorithms.md, "Relaxing the rooms'
-  // positions"). A building spans at most the relaxation's 200 m.
+  // positions"). Up to 200 m, the most a room grid spans (MapperOptions::max_room_extent_m).
   o.relaxation.continuation_gap_m =
       number_in(block, "relax_continuation_gap_m", 0.0, 200.0, o.relaxation.continuation_gap_m);
   if (block.child("relax_continuation_angle_sd_deg")) {

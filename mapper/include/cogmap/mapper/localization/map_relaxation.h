@@ -61,8 +61,9 @@ struct RelaxationOptions {
   /// a corridor's consecutive cuts draw its walls end to end, and a corridor's wall runs
   /// straight for tens of metres past doors and junctions. Their offset is taken at the nearer
   /// end and weighed as continuation_weight_m of overlap (an extrapolation). 20 m with the
-  /// angle sd below: measured against 1 (the default until 2026-12-08), 4, 10 and 40 m on
-  /// generated routes and explorations (docs/algorithms.md, "Relaxing the rooms' positions").
+  /// angle sd below: measured against 1 (the default until 2026-12-08), 4 and 10 m on
+  /// generated routes and explorations, and 40 m on the hallway (docs/algorithms.md, "Wall
+  /// lines carried past their gaps").
   double continuation_gap_m = 20.0;
   double continuation_weight_m = 0.5;
   /// How well the two pieces' directions agree, the turn between their rooms included: an
